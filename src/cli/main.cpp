@@ -1,3 +1,41 @@
+// vlit: per-vertex lighting of triangle meshes with point, linear and area lights, baked into glTF
+// vertex colours or rasterized to PNG. This file only wires the subcommands together.
 #include <iostream>
+
+#include "cli/commands.h"
+#include "cli/terminal.h"
+#include "core/input_error.h"
 #include "core/version.h"
-int main() { std::cout << "vlit " << vlit::kVersion << "\n"; return 0; }
+
+int main(int argc, char** argv) {
+  CLI::App app{"vlit: light triangle meshes per vertex with point, spot, directional, linear (tube) and area\n"
+               "(panel) lights, then bake the light into glTF vertex colors or render it to PNG."};
+  app.set_version_flag("--version", std::string("vlit ") + vlit::kVersion);
+  app.require_subcommand(1);
+  app.footer("Run 'vlit COMMAND --help' for the options of a command. Formats: docs/lights-json.md.");
+
+  const vlit::cli::Runner bake = vlit::cli::add_bake_command(app);
+  const vlit::cli::Runner render = vlit::cli::add_render_command(app);
+  const vlit::cli::Runner probe = vlit::cli::add_probe_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (app.got_subcommand("bake")) return bake();
+    if (app.got_subcommand("render")) return render();
+    if (app.got_subcommand("probe")) return probe();
+  } catch (const vlit::InputError& e) {
+    vlit::cli::print_error(e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    vlit::cli::print_error("out of memory");
+    return 1;
+  } catch (const std::exception& e) {
+    vlit::cli::print_error(e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,32 @@
+// The per-vertex loop: every vertex of every primitive, every light, all cores.
+// Output is coloured light per vertex, before the material: diffuse = Σ radiance · Id and
+// specular = Σ radiance · Is (kd = ks = 1). The bake stores the diffuse as the COLOR_0
+// multiplier; the renderer combines both with the material.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "scene/scene.h"
+#include "shading/prepared_light.h"
+
+namespace vlit {
+
+struct VertexLight {
+  std::vector<Vec3f> diffuse;   // per vertex, linear RGB
+  std::vector<Vec3f> specular;  // per vertex, linear RGB (empty when no specular was asked)
+};
+
+struct LightingRequest {
+  ShadeOptions shade;
+  std::optional<Vec3d> eye;  // specular is evaluated only with an eye
+  // Called from the calling thread with (vertices done, vertices total); may be empty.
+  std::function<void(std::size_t, std::size_t)> progress;
+};
+
+// One VertexLight per scene primitive, in the same order. Deterministic: the result does not
+// depend on the number of threads (each vertex is computed independently, lights summed in order).
+std::vector<VertexLight> light_scene_vertices(const Scene& scene, const LightingRequest& request);
+
+}  // namespace vlit

@@ -1,0 +1,152 @@
+#include "bake/vertex_color_bake.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+
+namespace vlit {
+namespace {
+
+// Gives every node that instances a mesh its own copy of that mesh (the first user keeps the
+// original), so per-instance light can be stored. Returns node -> mesh after duplication.
+std::map<int, int> unshare_meshes(tinygltf::Model& model, const Scene& scene, std::size_t& duplicated) {
+  std::map<int, int> mesh_of_node;
+  std::map<int, int> first_user;
+  for (const ScenePrimitive& p : scene.primitives) {
+    if (p.node < 0 || mesh_of_node.count(p.node)) continue;
+    const auto [it, inserted] = first_user.emplace(p.mesh, p.node);
+    if (inserted) {
+      mesh_of_node[p.node] = p.mesh;
+    } else {
+      model.meshes.push_back(model.meshes[p.mesh]);
+      const int copy = static_cast<int>(model.meshes.size()) - 1;
+      model.nodes[p.node].mesh = copy;
+      mesh_of_node[p.node] = copy;
+      ++duplicated;
+    }
+  }
+  return mesh_of_node;
+}
+
+void append_aligned(std::vector<unsigned char>& data, const void* bytes, std::size_t n) {
+  while (data.size() % 4 != 0) data.push_back(0);
+  const auto* b = static_cast<const unsigned char*>(bytes);
+  data.insert(data.end(), b, b + n);
+}
+
+}  // namespace
+
+BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const std::vector<VertexLight>& light,
+                              const BakeOptions& options) {
+  BakeReport report;
+  const auto mesh_of_node = unshare_meshes(model, scene, report.duplicated_meshes);
+
+  // All colours go into one new buffer.
+  tinygltf::Buffer buffer;
+  buffer.name = "vlit baked vertex light";
+  const int buffer_index = static_cast<int>(model.buffers.size());
+
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const ScenePrimitive& sp = scene.primitives[i];
+    if (sp.node < 0) continue;
+    tinygltf::Primitive& prim = model.meshes[mesh_of_node.at(sp.node)].primitives[sp.primitive];
+    const std::size_t n = sp.positions.size();
+    const auto& diffuse = light[i].diffuse;
+
+    const std::size_t offset = (buffer.data.size() + 3) / 4 * 4;
+    std::size_t byte_length = 0;
+    int component_type = 0;
+    int type = TINYGLTF_TYPE_VEC4;
+    bool normalized = true;
+    if (options.format == ColorFormat::kFloat) {
+      std::vector<float> values(n * 3);
+      for (std::size_t v = 0; v < n; ++v) {
+        const Vec3f c = diffuse[v] * static_cast<float>(options.exposure);
+        values[3 * v] = c.x; values[3 * v + 1] = c.y; values[3 * v + 2] = c.z;
+      }
+      append_aligned(buffer.data, values.data(), values.size() * sizeof(float));
+      byte_length = values.size() * sizeof(float);
+      component_type = TINYGLTF_COMPONENT_TYPE_FLOAT;
+      type = TINYGLTF_TYPE_VEC3;
+      normalized = false;
+    } else {
+      // Normalized integers, VEC4 so every element is 4-byte aligned; alpha = 1.
+      const bool wide = options.format == ColorFormat::kUnorm16;
+      const double max_code = wide ? 65535.0 : 255.0;
+      std::vector<std::uint16_t> codes16;
+      std::vector<std::uint8_t> codes8;
+      for (std::size_t v = 0; v < n; ++v) {
+        const Vec3f c = diffuse[v];
+        bool clipped = false;
+        for (int ch = 0; ch < 4; ++ch) {
+          double x = ch == 3 ? 1.0 : c[ch] * options.exposure;
+          if (!(x >= 0)) x = 0;  // also catches NaN
+          if (x > 1) { clipped = true; x = 1; }
+          const double code = std::round(x * max_code);
+          report.max_quantization_error = std::max(report.max_quantization_error, std::abs(code / max_code - x));
+          if (wide) codes16.push_back(static_cast<std::uint16_t>(code));
+          else codes8.push_back(static_cast<std::uint8_t>(code));
+        }
+        if (clipped) ++report.clipped_vertices;
+      }
+      if (wide) {
+        append_aligned(buffer.data, codes16.data(), codes16.size() * 2);
+        byte_length = codes16.size() * 2;
+        component_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+      } else {
+        append_aligned(buffer.data, codes8.data(), codes8.size());
+        byte_length = codes8.size();
+        component_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+      }
+    }
+
+    tinygltf::BufferView view;
+    view.buffer = buffer_index;
+    view.byteOffset = offset;
+    view.byteLength = byte_length;
+    view.target = TINYGLTF_TARGET_ARRAY_BUFFER;
+    model.bufferViews.push_back(view);
+
+    tinygltf::Accessor acc;
+    acc.bufferView = static_cast<int>(model.bufferViews.size()) - 1;
+    acc.byteOffset = 0;
+    acc.componentType = component_type;
+    acc.normalized = normalized;
+    acc.count = n;
+    acc.type = type;
+    model.accessors.push_back(acc);
+
+    if (prim.attributes.count(options.target)) ++report.replaced_attributes;
+    prim.attributes[options.target] = static_cast<int>(model.accessors.size()) - 1;
+    report.vertices += n;
+  }
+  if (!buffer.data.empty()) model.buffers.push_back(std::move(buffer));
+
+  if (options.mark_unlit) {
+    const std::string unlit = "KHR_materials_unlit";
+    for (auto& m : model.materials) m.extensions[unlit] = tinygltf::Value(tinygltf::Value::Object());
+    // Primitives without a material use glTF's default (lit) material: give them an unlit one.
+    bool needs_default = false;
+    for (auto& mesh : model.meshes)
+      for (auto& prim : mesh.primitives)
+        if (prim.material < 0 && prim.attributes.count(options.target)) needs_default = true;
+    if (needs_default) {
+      tinygltf::Material m;
+      m.name = "vlit default (unlit)";
+      m.pbrMetallicRoughness.baseColorFactor = {1, 1, 1, 1};
+      m.extensions[unlit] = tinygltf::Value(tinygltf::Value::Object());
+      model.materials.push_back(m);
+      const int index = static_cast<int>(model.materials.size()) - 1;
+      for (auto& mesh : model.meshes)
+        for (auto& prim : mesh.primitives)
+          if (prim.material < 0 && prim.attributes.count(options.target)) prim.material = index;
+    }
+    if (!model.materials.empty() &&
+        std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), unlit) == model.extensionsUsed.end())
+      model.extensionsUsed.push_back(unlit);
+  }
+  return report;
+}
+
+}  // namespace vlit

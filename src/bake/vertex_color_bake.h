@@ -1,0 +1,39 @@
+// Storing per-vertex light in a glTF model as a vertex colour attribute (COLOR_0 by default).
+// The stored colour is the multiplier glTF viewers apply to baseColor (the spec's COLOR_0
+// semantics): viewer colour = baked light x albedo. Nothing else in the model changes, except that
+// a mesh instanced by several nodes is duplicated so each instance carries its own light.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+#include "bake/light_vertices.h"
+#include "scene/scene.h"
+
+namespace vlit {
+
+enum class ColorFormat { kUnorm16, kUnorm8, kFloat };
+
+struct BakeOptions {
+  std::string target = "COLOR_0";
+  ColorFormat format = ColorFormat::kUnorm16;
+  double exposure = 1;      // multiplies the light before encoding
+  bool mark_unlit = true;   // add KHR_materials_unlit so viewers do not light the asset again
+};
+
+struct BakeReport {
+  std::size_t vertices = 0;
+  std::size_t clipped_vertices = 0;     // a channel above 1 clamped (unorm formats only)
+  double max_quantization_error = 0;    // largest |stored - exact| over unclipped channels
+  std::size_t replaced_attributes = 0;  // primitives whose existing target attribute was replaced
+  std::size_t duplicated_meshes = 0;
+};
+
+// `light` holds one VertexLight per scene primitive (light_scene_vertices). The scene must have
+// been built from this model (gltf/gltf_scene.h).
+BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const std::vector<VertexLight>& light,
+                              const BakeOptions& options);
+
+}  // namespace vlit

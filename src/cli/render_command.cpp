@@ -1,0 +1,125 @@
+// vlit render IN --lights LIGHTS.json -o OUT.png [--width W --height H] [--samples N] ...
+// Lights every vertex (diffuse and specular towards the camera), then rasterizes with Gouraud
+// shading: vertex colour = kd x diffuse light + ks x specular light.
+#include <cstdio>
+#include <sstream>
+
+#include "bake/light_vertices.h"
+#include "cli/commands.h"
+#include "cli/terminal.h"
+#include "core/input_error.h"
+#include "raster/raster.h"
+#include "scene/load_scene.h"
+
+namespace vlit::cli {
+namespace {
+
+struct RenderArgs {
+  std::string input, output, lights;
+  int width = 800, height = 600, samples = 4;
+  double exposure = 1;
+  std::vector<double> background{0, 0, 0};
+  bool cull_back_faces = false;
+  bool quiet = false;
+};
+
+raster::Camera to_raster_camera(const SceneCamera& c) {
+  raster::Camera out;
+  Mat4d m = Mat4d::identity();
+  const Vec3d cols[4] = {c.right, c.up, c.back, c.position};
+  for (int col = 0; col < 4; ++col)
+    for (int row = 0; row < 3; ++row) m.m[row][col] = cols[col][row];
+  out.world_from_camera = m;
+  out.orthographic = c.orthographic;
+  out.yfov = c.yfov;
+  out.aspect = c.aspect;
+  out.xmag = c.xmag;
+  out.ymag = c.ymag;
+  out.znear = c.znear;
+  out.zfar = c.zfar;
+  return out;
+}
+
+int run_render(const RenderArgs& args) {
+  LoadedScene loaded = load_scene(args.input, args.lights);
+  for (const auto& w : loaded.warnings) print_warning(w);
+  const Scene& scene = loaded.scene;
+  if (scene.lights.empty()) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
+
+  raster::RenderOptions options;
+  options.width = args.width;
+  options.height = args.height;
+  options.samples = args.samples;
+  options.background = {static_cast<float>(args.background[0]), static_cast<float>(args.background[1]),
+                        static_cast<float>(args.background[2])};
+  options.cull_back_faces = args.cull_back_faces;
+  if (const std::string problem = raster::validate_render_options(options); !problem.empty())
+    throw InputError(args.output, problem);
+
+  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const auto& p : scene.primitives)
+    for (const auto& v : p.positions) { lo = min(lo, v); hi = max(hi, v); }
+  const double aspect = static_cast<double>(args.width) / args.height;
+  raster::Camera camera = scene.camera ? to_raster_camera(*scene.camera) : raster::frame_bounds(lo, hi, aspect);
+  if (const std::string problem = raster::validate_camera(camera); !problem.empty()) {
+    print_warning(args.input + ": camera unusable (" + problem + "); framing the scene instead");
+    camera = raster::frame_bounds(lo, hi, aspect);
+  }
+
+  Progress progress("lighting " + args.input, !args.quiet);
+  LightingRequest request;
+  request.eye = Vec3d{camera.world_from_camera.m[0][3], camera.world_from_camera.m[1][3], camera.world_from_camera.m[2][3]};
+  request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+  const auto light = light_scene_vertices(scene, request);
+  progress.finish();
+
+  std::vector<raster::DrawMesh> meshes;
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const ScenePrimitive& prim = scene.primitives[i];
+    const Material& material = scene.material_of(prim);
+    const PhongMaterial phong = phong_from_metallic_roughness(material);
+    raster::DrawMesh mesh;
+    mesh.double_sided = material.double_sided;
+    mesh.indices = prim.triangles;
+    mesh.positions.reserve(prim.positions.size());
+    mesh.colors.reserve(prim.positions.size());
+    for (std::size_t v = 0; v < prim.positions.size(); ++v) {
+      mesh.positions.push_back(static_cast<Vec3f>(prim.positions[v]));
+      Vec3d color = hadamard(phong.kd, static_cast<Vec3d>(light[i].diffuse[v]));
+      if (!light[i].specular.empty()) color += hadamard(phong.ks, static_cast<Vec3d>(light[i].specular[v]));
+      mesh.colors.push_back(static_cast<Vec3f>(color));
+    }
+    meshes.push_back(std::move(mesh));
+  }
+  const raster::Image image = raster::render(meshes, camera, options);
+  const std::vector<uint8_t> rgb8 = raster::encode_srgb8(image, static_cast<float>(args.exposure));
+  std::string error;
+  if (!raster::write_png(args.output, image.width, image.height, rgb8, &error)) throw InputError(args.output, error);
+  if (!args.quiet)
+    std::fprintf(stderr, "rendered %zu triangles, %dx%d, %d samples per pixel, into %s\n",
+                 [&] { std::size_t n = 0; for (const auto& m : meshes) n += m.indices.size() / 3; return n; }(),
+                 image.width, image.height, args.samples, args.output.c_str());
+  return 0;
+}
+
+}  // namespace
+
+Runner add_render_command(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  CLI::App* cmd = app.add_subcommand("render", "Light every vertex and rasterize with Gouraud shading to an sRGB PNG.");
+  cmd->add_option("input", args->input, "Input asset (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--output", args->output, "Output PNG; written atomically")->required();
+  cmd->add_option("--lights", args->lights, "LIGHTS.json with the lights to add (docs/lights-json.md)")->check(CLI::ExistingFile);
+  cmd->add_option("--width", args->width, "Image width in pixels (default 800)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--height", args->height, "Image height in pixels (default 600)")->check(CLI::Range(1, 16384));
+  cmd->add_option("--samples", args->samples, "Samples per pixel for anti-aliasing: 1, 4 (default), 16, 64")
+      ->check(CLI::IsMember({1, 4, 9, 16, 25, 36, 49, 64}));
+  cmd->add_option("--exposure", args->exposure, "Multiplier applied before sRGB encoding (default 1)")->check(CLI::PositiveNumber);
+  cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
+  cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
+  cmd->footer("The camera is the glTF's first camera if it has one, otherwise a 3/4 view framing the whole scene.");
+  return [args] { return run_render(*args); };
+}
+
+}  // namespace vlit::cli

@@ -1,0 +1,26 @@
+// Opening a glTF 2.0 file (.gltf with external or embedded buffers, or .glb) with tinygltf,
+// without decoding images (vlit never needs their pixels; they pass through to the output) and
+// without ever touching the network. Extensions that change how geometry is stored and that vlit
+// cannot decode are refused up front.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+
+namespace vlit {
+
+struct GltfFile {
+  std::string path;
+  tinygltf::Model model;
+  std::vector<std::string> warnings;
+};
+
+// Throws InputError(path, ...) if the file cannot be parsed or needs an unsupported extension.
+GltfFile load_gltf_file(const std::string& path);
+
+// True if the path names a glTF asset (by extension .gltf / .glb, case-insensitive).
+bool is_gltf_path(const std::string& path);
+
+}  // namespace vlit

@@ -1,0 +1,241 @@
+#include "gltf/gltf_scene.h"
+
+#include <cmath>
+#include <functional>
+
+#include "core/affine.h"
+#include "core/input_error.h"
+#include "gltf/accessor_reader.h"
+#include "mesh/vertex_normals.h"
+
+namespace vlit {
+namespace {
+
+Affine local_transform(const tinygltf::Node& node) {
+  Affine a;
+  if (node.matrix.size() == 16) {
+    // glTF matrices are column-major.
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) a.m[r][c] = node.matrix[c * 4 + r];
+    return a;
+  }
+  Vec3d t{0, 0, 0}, s{1, 1, 1};
+  double qx = 0, qy = 0, qz = 0, qw = 1;
+  if (node.translation.size() == 3) t = {node.translation[0], node.translation[1], node.translation[2]};
+  if (node.scale.size() == 3) s = {node.scale[0], node.scale[1], node.scale[2]};
+  if (node.rotation.size() == 4) {
+    qx = node.rotation[0]; qy = node.rotation[1]; qz = node.rotation[2]; qw = node.rotation[3];
+    const double len = std::sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
+    if (len > 0) { qx /= len; qy /= len; qz /= len; qw /= len; }
+  }
+  const double rot[3][3] = {
+      {1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)},
+      {2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)},
+      {2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)}};
+  const double scale[3] = {s.x, s.y, s.z};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) a.m[r][c] = rot[r][c] * scale[c];
+    a.m[r][3] = t[r];
+  }
+  return a;
+}
+
+bool finite_affine(const Affine& a) {
+  for (const auto& row : a.m)
+    for (double v : row)
+      if (!std::isfinite(v)) return false;
+  return true;
+}
+
+Vec3d vec3_at(const std::vector<double>& data, std::size_t i) { return {data[3 * i], data[3 * i + 1], data[3 * i + 2]}; }
+
+void read_primitive(const GltfFile& file, int node_index, int mesh_index, int prim_index, const Affine& world,
+                    Scene& scene, std::vector<std::string>& warnings) {
+  const tinygltf::Model& model = file.model;
+  const tinygltf::Primitive& prim = model.meshes[mesh_index].primitives[prim_index];
+  const std::string where = "meshes[" + std::to_string(mesh_index) + "].primitives[" + std::to_string(prim_index) + "]";
+  const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+  if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+    warnings.push_back(file.path + ": " + where + ": skipped (mode " + std::to_string(mode) + " is not triangles)");
+    return;
+  }
+  const auto pos_it = prim.attributes.find("POSITION");
+  if (pos_it == prim.attributes.end()) {
+    warnings.push_back(file.path + ": " + where + ": skipped (no POSITION attribute)");
+    return;
+  }
+  const tinygltf::Accessor* pos_acc = pos_it->second >= 0 && static_cast<std::size_t>(pos_it->second) < model.accessors.size()
+                                          ? &model.accessors[pos_it->second] : nullptr;
+  if (!pos_acc || pos_acc->type != TINYGLTF_TYPE_VEC3)
+    throw InputError(file.path, "POSITION must be a VEC3 accessor", where);
+  const std::vector<double> pos = read_accessor_as_doubles(model, pos_it->second, file.path);
+  const std::size_t vertex_count = pos.size() / 3;
+
+  std::vector<std::uint32_t> draw_order;
+  if (prim.indices >= 0) {
+    draw_order = read_indices(model, prim.indices, vertex_count, file.path);
+  } else {
+    draw_order.resize(vertex_count);
+    for (std::size_t i = 0; i < vertex_count; ++i) draw_order[i] = static_cast<std::uint32_t>(i);
+  }
+
+  ScenePrimitive out;
+  out.node = node_index;
+  out.mesh = mesh_index;
+  out.primitive = prim_index;
+  out.material = prim.material;
+  out.triangles = triangle_list(mode, draw_order);
+  const bool mirrored = world.determinant() < 0;
+  if (mirrored)  // a mirroring transform flips winding: restore counter-clockwise front faces
+    for (std::size_t t = 0; t + 2 < out.triangles.size(); t += 3) std::swap(out.triangles[t + 1], out.triangles[t + 2]);
+
+  out.positions.resize(vertex_count);
+  std::size_t non_finite = 0;
+  for (std::size_t i = 0; i < vertex_count; ++i) {
+    out.positions[i] = world.apply_point(vec3_at(pos, i));
+    if (!is_finite(out.positions[i])) { out.positions[i] = {}; ++non_finite; }
+  }
+  if (non_finite > 0) {
+    // Triangles touching a non-finite vertex are dropped; those vertices get no light.
+    warnings.push_back(file.path + ": " + where + ": " + std::to_string(non_finite) +
+                       " vertices have non-finite positions; they receive no light");
+    std::vector<bool> bad(vertex_count, false);
+    for (std::size_t i = 0; i < vertex_count; ++i) bad[i] = !is_finite(world.apply_point(vec3_at(pos, i)));
+    std::vector<std::uint32_t> kept;
+    for (std::size_t t = 0; t + 2 < out.triangles.size(); t += 3)
+      if (!bad[out.triangles[t]] && !bad[out.triangles[t + 1]] && !bad[out.triangles[t + 2]])
+        kept.insert(kept.end(), out.triangles.begin() + t, out.triangles.begin() + t + 3);
+    out.triangles = std::move(kept);
+  }
+
+  const auto normal_it = prim.attributes.find("NORMAL");
+  std::vector<Vec3d> computed;
+  if (normal_it != prim.attributes.end()) {
+    const std::vector<double> nrm = read_accessor_as_doubles(model, normal_it->second, file.path);
+    if (nrm.size() != pos.size()) throw InputError(file.path, "NORMAL and POSITION counts differ", where);
+    out.normals.resize(vertex_count);
+    std::size_t repaired = 0;
+    for (std::size_t i = 0; i < vertex_count; ++i) {
+      const Vec3d n = normalize(world.apply_normal(vec3_at(nrm, i)));
+      if (length_squared(n) == 0 || !is_finite(n)) {
+        if (computed.empty()) computed = angle_weighted_normals(out.positions, out.triangles);
+        out.normals[i] = computed[i];
+        ++repaired;
+      } else {
+        out.normals[i] = n;
+      }
+    }
+    if (repaired > 0)
+      warnings.push_back(file.path + ": " + where + ": " + std::to_string(repaired) +
+                         " zero or non-finite normals replaced by normals computed from the triangles");
+  } else {
+    out.normals = angle_weighted_normals(out.positions, out.triangles);
+  }
+  scene.primitives.push_back(std::move(out));
+}
+
+Material read_material(const tinygltf::Material& m) {
+  Material out;
+  const auto& f = m.pbrMetallicRoughness.baseColorFactor;
+  if (f.size() >= 3) out.base_color = {f[0], f[1], f[2]};
+  out.metallic = m.pbrMetallicRoughness.metallicFactor;
+  out.roughness = m.pbrMetallicRoughness.roughnessFactor;
+  out.double_sided = m.doubleSided;
+  for (double* v : {&out.base_color.x, &out.base_color.y, &out.base_color.z, &out.metallic, &out.roughness})
+    if (!std::isfinite(*v)) *v = 1;
+  return out;
+}
+
+std::optional<SceneCamera> read_camera(const tinygltf::Camera& cam, const Affine& world) {
+  SceneCamera c;
+  c.position = world.apply_point({0, 0, 0});
+  c.right = normalize(world.apply_vector({1, 0, 0}));
+  c.up = normalize(world.apply_vector({0, 1, 0}));
+  c.back = normalize(cross(c.right, c.up));
+  c.up = cross(c.back, c.right);
+  if (cam.type == "orthographic") {
+    c.orthographic = true;
+    c.xmag = cam.orthographic.xmag;
+    c.ymag = cam.orthographic.ymag;
+    c.znear = cam.orthographic.znear;
+    c.zfar = cam.orthographic.zfar;
+    if (!(c.xmag != 0 && c.ymag != 0 && *c.zfar > c.znear)) return std::nullopt;
+  } else {
+    c.yfov = cam.perspective.yfov;
+    if (cam.perspective.aspectRatio > 0) c.aspect = cam.perspective.aspectRatio;
+    c.znear = cam.perspective.znear;
+    if (cam.perspective.zfar > 0) c.zfar = cam.perspective.zfar;
+    if (!(c.yfov > 0 && c.yfov < M_PI && c.znear > 0)) return std::nullopt;
+  }
+  if (!is_finite(c.position) || !is_finite(c.right) || !is_finite(c.up) || length_squared(c.back) == 0) return std::nullopt;
+  return c;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> triangle_list(int mode, const std::vector<std::uint32_t>& idx) {
+  std::vector<std::uint32_t> tris;
+  if (mode == TINYGLTF_MODE_TRIANGLES) {
+    tris.assign(idx.begin(), idx.begin() + static_cast<long>(idx.size() - idx.size() % 3));
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+    for (std::size_t i = 2; i < idx.size(); ++i) {
+      // glTF spec: triangle i uses {i, i+1, i+2} for even i and {i+1, i, i+2} for odd i (0-based i = i-2 here).
+      if ((i - 2) % 2 == 0) tris.insert(tris.end(), {idx[i - 2], idx[i - 1], idx[i]});
+      else tris.insert(tris.end(), {idx[i - 1], idx[i - 2], idx[i]});
+    }
+  } else if (mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+    for (std::size_t i = 2; i < idx.size(); ++i) tris.insert(tris.end(), {idx[i - 1], idx[i], idx[0]});
+  }
+  return tris;
+}
+
+Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
+  const tinygltf::Model& model = file.model;
+  Scene scene;
+  for (const auto& m : model.materials) scene.materials.push_back(read_material(m));
+
+  // Roots: the default scene's nodes; without scenes, every node that is nobody's child.
+  std::vector<int> roots;
+  if (!model.scenes.empty()) {
+    const int s = model.defaultScene >= 0 && static_cast<std::size_t>(model.defaultScene) < model.scenes.size()
+                      ? model.defaultScene : 0;
+    roots = model.scenes[s].nodes;
+  } else {
+    std::vector<bool> is_child(model.nodes.size(), false);
+    for (const auto& n : model.nodes)
+      for (int c : n.children)
+        if (c >= 0 && static_cast<std::size_t>(c) < model.nodes.size()) is_child[c] = true;
+    for (std::size_t i = 0; i < model.nodes.size(); ++i)
+      if (!is_child[i]) roots.push_back(static_cast<int>(i));
+  }
+
+  std::vector<int> visits(model.nodes.size(), 0);
+  std::function<void(int, const Affine&)> visit = [&](int index, const Affine& parent) {
+    if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size())
+      throw InputError(file.path, "node " + std::to_string(index) + " does not exist");
+    if (visits[index]++ > 0)
+      throw InputError(file.path, "node " + std::to_string(index) + " is reached twice (a cycle or a node with two parents)");
+    const tinygltf::Node& node = model.nodes[index];
+    const Affine world = parent * local_transform(node);
+    if (!finite_affine(world)) throw InputError(file.path, "transform is not finite", "nodes[" + std::to_string(index) + "]");
+    if (node.mesh >= 0) {
+      if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
+        throw InputError(file.path, "mesh " + std::to_string(node.mesh) + " does not exist", "nodes[" + std::to_string(index) + "]");
+      for (std::size_t p = 0; p < model.meshes[node.mesh].primitives.size(); ++p)
+        read_primitive(file, index, node.mesh, static_cast<int>(p), world, scene, warnings);
+    }
+    if (node.camera >= 0 && static_cast<std::size_t>(node.camera) < model.cameras.size() && !scene.camera)
+      scene.camera = read_camera(model.cameras[node.camera], world);
+    for (int child : node.children) visit(child, world);
+  };
+  for (int r : roots) visit(r, Affine{});
+
+  for (auto& p : scene.primitives)
+    if (p.material >= static_cast<int>(scene.materials.size())) {
+      warnings.push_back(file.path + ": material " + std::to_string(p.material) + " does not exist; using the default material");
+      p.material = -1;
+    }
+  return scene;
+}
+
+}  // namespace vlit

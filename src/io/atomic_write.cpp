@@ -1,0 +1,58 @@
+#include "io/atomic_write.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/input_error.h"
+
+namespace vlit {
+
+void write_file_atomically(const std::string& path, std::string_view bytes) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError(path, "output directory does not exist: " + dir.string());
+  std::string tmpl = (dir / ("." + target.filename().string() + ".vlit-tmp-XXXXXX")).string();
+  std::vector<char> name(tmpl.begin(), tmpl.end());
+  name.push_back('\0');
+  const int fd = mkstemp(name.data());
+  if (fd < 0) throw InputError(path, std::string("cannot create a temporary file: ") + std::strerror(errno));
+  const std::string tmp_path(name.data());
+  auto fail = [&](const std::string& what) {
+    const int saved = errno;
+    ::close(fd);
+    ::unlink(tmp_path.c_str());
+    throw InputError(path, what + ": " + std::strerror(saved));
+  };
+  std::size_t written = 0;
+  while (written < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      fail("write failed");
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (::fchmod(fd, 0644) != 0) fail("cannot set permissions");
+  if (::fsync(fd) != 0) fail("cannot flush");
+  if (::close(fd) != 0) {
+    ::unlink(tmp_path.c_str());
+    throw InputError(path, std::string("cannot close: ") + std::strerror(errno));
+  }
+  if (std::rename(tmp_path.c_str(), path.c_str()) != 0) {
+    const int saved = errno;
+    ::unlink(tmp_path.c_str());
+    throw InputError(path, std::string("cannot rename into place: ") + std::strerror(saved));
+  }
+}
+
+}  // namespace vlit

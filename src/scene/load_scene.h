@@ -1,0 +1,23 @@
+// Loading what a command works on: an asset (glTF now; mesh formats through OpenMesh) plus the
+// lights of an optional LIGHTS.json, into one world-space Scene.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gltf/gltf_file.h"
+#include "scene/scene.h"
+
+namespace vlit {
+
+struct LoadedScene {
+  Scene scene;
+  std::optional<GltfFile> gltf;        // present when the asset is glTF (the bake writes it back)
+  std::vector<std::string> warnings;   // one line each, already prefixed with the file name
+};
+
+// Throws InputError naming the file for anything it cannot read.
+LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path);
+
+}  // namespace vlit

@@ -1,0 +1,19 @@
+#include "scene/material.h"
+
+#include <algorithm>
+
+namespace vlit {
+
+PhongMaterial phong_from_metallic_roughness(const Material& m) {
+  const double metallic = std::clamp(m.metallic, 0.0, 1.0);
+  const double roughness = std::clamp(m.roughness, 0.0, 1.0);
+  PhongMaterial p;
+  p.kd = m.base_color;
+  p.ks = Vec3d{0.04, 0.04, 0.04} * (1 - metallic) + m.base_color * metallic;
+  const double alpha = roughness * roughness;
+  const double exponent = alpha > 0 ? 2 / (alpha * alpha) - 2 : 1e4;
+  p.shininess = std::clamp(exponent, 1.0, 1e4);
+  return p;
+}
+
+}  // namespace vlit

@@ -1,0 +1,31 @@
+// Surface material: what the glTF says (metallic-roughness) and the Phong terms the kernels use.
+#pragma once
+
+#include "core/vec3.h"
+
+namespace vlit {
+
+struct Material {
+  Vec3d base_color{1, 1, 1};  // linear RGB (glTF baseColorFactor, alpha ignored)
+  double metallic = 1;        // glTF defaults
+  double roughness = 1;
+  bool double_sided = false;
+};
+
+// The Phong material of paper eq. 1 and 6 derived from a metallic-roughness material
+// (docs/conventions.md "Material mapping"):
+//   kd = base_color   (metallic does not darken the diffuse: with no environment light a metal
+//                      would bake black, glTF's default material is fully metallic, and COLOR_0
+//                      must be a plain multiplier of baseColor; see docs/conventions.md)
+//   ks = mix(0.04, base_color, metallic)            (F0 of a dielectric is 4%)
+//   m  = clamp(2 / alpha^2 - 2, 1, 1e4) with alpha = roughness^2
+//        (the Blinn-Phong exponent with the same lobe width as a GGX of that roughness).
+struct PhongMaterial {
+  Vec3d kd{1, 1, 1};
+  Vec3d ks{0, 0, 0};
+  double shininess = 1;
+};
+
+PhongMaterial phong_from_metallic_roughness(const Material& material);
+
+}  // namespace vlit

@@ -1,0 +1,69 @@
+// A light ready for the per-vertex loop: the user's LightSource turned into the kernel of its
+// model (shaders_cpu/), with every per-light constant computed once, in the scalar type T the
+// loop runs in. shade() is the one place that dispatches on the light model.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+#include "conventions.h"
+#include "directional_light.h"
+#include "point_light.h"
+#include "scene/light_source.h"
+#include "spot_light.h"
+
+namespace vlit {
+
+struct ShadeOptions {
+  bool with_specular = true;
+  SpecularOptions specular;
+};
+
+template <class T>
+struct PreparedLight {
+  using Kernel = std::variant<PointLight<T>, DirectionalLight<T>, SpotLight<T>>;
+  LightType type = LightType::kPoint;
+  Vec3<T> radiance{1, 1, 1};  // colour x intensity
+  Kernel kernel;
+};
+
+template <class T>
+PreparedLight<T> prepare_light(const LightSource& light) {
+  auto v = [](const Vec3d& d) { return static_cast<Vec3<T>>(d); };
+  PreparedLight<T> out;
+  out.type = light.type;
+  out.radiance = v(light.color * light.intensity);
+  switch (light.type) {
+    case LightType::kPoint:
+      out.kernel = PointLight<T>{v(light.position), T(light.falloff)};
+      break;
+    case LightType::kDirectional:
+      out.kernel = DirectionalLight<T>{v(light.direction)};
+      break;
+    case LightType::kSpot:
+      out.kernel = SpotLight<T>{v(light.position), v(light.direction), T(light.cos_inner), T(light.cos_outer),
+                                T(light.falloff)};
+      break;
+    default:
+      throw std::invalid_argument(std::string("light model not available yet: ") + light_type_name(light.type));
+  }
+  return out;
+}
+
+// Response of one light at one point for unit intensity and kd = ks = 1 (conventions.h).
+template <class T>
+Response<T> shade(const PreparedLight<T>& light, const ShadingPoint<T>& sp, const ShadeOptions& options) {
+  const bool spec = options.with_specular && options.specular.method != SpecularMethod::kNone;
+  return std::visit(
+      [&](const auto& k) -> Response<T> {
+        using K = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<K, PointLight<T>>) return shade_point(k, sp, spec);
+        else if constexpr (std::is_same_v<K, DirectionalLight<T>>) return shade_directional(k, sp, spec);
+        else return shade_spot(k, sp, spec);
+      },
+      light.kernel);
+}
+
+}  // namespace vlit

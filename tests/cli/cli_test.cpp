@@ -1,0 +1,160 @@
+// End-to-end tests of the vlit executable: what users type, what they get back.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include <stb_image.h>
+
+#include "core/version.h"
+#include "gltf/accessor_reader.h"
+#include "gltf/gltf_file.h"
+#include "support/gltf_builder.h"
+#include "support/run_command.h"
+
+using namespace vlit;
+using vlit::test::run_command;
+
+namespace {
+
+const std::string kVlit = VLIT_BINARY;
+const std::string kSource = VLIT_SOURCE_DIR;
+const std::string kDemo = kSource + "/assets/demo/studio.glb";
+const std::string kDemoLights = kSource + "/assets/demo/lights.json";
+
+std::string q(const std::string& s) { return "'" + s + "'"; }
+
+std::size_t count_lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+TEST_CASE("--version and --help") {
+  const auto v = run_command(kVlit + " --version");
+  CHECK(v.exit_code == 0);
+  CHECK(v.out.find(kVersion) != std::string::npos);
+  const auto h = run_command(kVlit + " --help");
+  CHECK(h.exit_code == 0);
+  for (const char* cmd : {"bake", "render", "probe"}) CHECK(h.out.find(cmd) != std::string::npos);
+  for (const char* cmd : {"bake", "render", "probe"}) {
+    const auto c = run_command(kVlit + " " + cmd + " --help");
+    CHECK(c.exit_code == 0);
+    CHECK(c.out.find("--lights") != std::string::npos);
+  }
+  CHECK(run_command(kVlit).exit_code != 0);  // a command is required
+}
+
+TEST_CASE("bake the demo scene: every primitive gets COLOR_0, the input is untouched") {
+  const auto dir = vlit::test::temp_dir("cli-bake");
+  const std::string before = vlit::test::read_all(kDemo);
+  const std::string out = (dir / "demo.glb").string();
+  const auto r = run_command(kVlit + " bake " + q(kDemo) + " --lights " + q(kDemoLights) + " -o " + q(out));
+  CHECK_MESSAGE(r.exit_code == 0, r.err);
+  CHECK(vlit::test::read_all(kDemo) == before);
+  const GltfFile baked = load_gltf_file(out);
+  std::size_t primitives = 0;
+  for (const auto& mesh : baked.model.meshes)
+    for (const auto& prim : mesh.primitives) {
+      ++primitives;
+      REQUIRE(prim.attributes.count("COLOR_0"));
+      const auto colors = read_accessor_as_doubles(baked.model, prim.attributes.at("COLOR_0"), out);
+      CHECK(colors.size() == 4 * baked.model.accessors[prim.attributes.at("POSITION")].count);
+      CHECK(*std::max_element(colors.begin(), colors.end()) > 0);  // lit, not black
+    }
+  CHECK(primitives == 5);
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) == 1);  // no temporary left
+}
+
+TEST_CASE("bake refuses to overwrite its input") {
+  const auto dir = vlit::test::temp_dir("cli-self");
+  const auto copy = dir / "scene.glb";
+  std::filesystem::copy_file(kDemo, copy);
+  const std::string before = vlit::test::read_all(copy);
+  const auto r = run_command(kVlit + " bake " + q(copy.string()) + " --lights " + q(kDemoLights) + " -o " +
+                             q((dir / "." / "scene.glb").string()));
+  CHECK(r.exit_code != 0);
+  CHECK(r.err.find("refusing to overwrite the input") != std::string::npos);
+  CHECK(vlit::test::read_all(copy) == before);
+}
+
+TEST_CASE("bad inputs: one error line naming the file, non-zero exit, no output") {
+  const auto dir = vlit::test::temp_dir("cli-bad");
+  const std::string out = (dir / "out.glb").string();
+  SUBCASE("bad lights file") {
+    const auto lights = dir / "lights.json";
+    std::ofstream(lights) << R"({"lights": [{"type": "point", "position": [0, 0]}]})";
+    const auto r = run_command(kVlit + " bake " + q(kDemo) + " --lights " + q(lights.string()) + " -o " + q(out));
+    CHECK(r.exit_code == 1);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find(lights.string() + ": /lights/0/position: expected an array of 3 numbers") != std::string::npos);
+  }
+  SUBCASE("not a glTF") {
+    const auto junk = dir / "junk.glb";
+    std::ofstream(junk) << "this is not glTF";
+    const auto r = run_command(kVlit + " bake " + q(junk.string()) + " -o " + q(out));
+    CHECK(r.exit_code == 1);
+    CHECK(count_lines(r.err) == 1);
+    CHECK(r.err.find(junk.string() + ": not a valid glTF 2.0 file") != std::string::npos);
+  }
+  SUBCASE("index out of range (malformed corpus)") {
+    const std::string bad = std::string(VLIT_SHARED_DIR) + "/assets/bad-gltf/assimp/IndexOutOfRange/IndexOutOfRange.gltf";
+    if (!std::filesystem::exists(bad)) return;
+    const auto r = run_command(kVlit + " bake " + q(bad) + " -o " + q(out));
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find(bad + ": ") != std::string::npos);
+  }
+  CHECK_FALSE(std::filesystem::exists(out));
+  CHECK(std::distance(std::filesystem::directory_iterator(dir), {}) <= 2);  // only the inputs made above
+}
+
+TEST_CASE("render writes a PNG of the requested size") {
+  const auto dir = vlit::test::temp_dir("cli-render");
+  const std::string out = (dir / "demo.png").string();
+  const auto r = run_command(kVlit + " render " + q(kDemo) + " --lights " + q(kDemoLights) +
+                             " -o " + q(out) + " --width 64 --height 48 --samples 1");
+  CHECK_MESSAGE(r.exit_code == 0, r.err);
+  int w = 0, h = 0, comp = 0;
+  REQUIRE(stbi_info(out.c_str(), &w, &h, &comp) == 1);
+  CHECK(w == 64);
+  CHECK(h == 48);
+  CHECK(comp == 3);
+}
+
+TEST_CASE("probe prints the point light's value at each point, 17 digits") {
+  const auto dir = vlit::test::temp_dir("cli-probe");
+  const auto lights = dir / "lights.json";
+  std::ofstream(lights) << R"({"lights": [{"type": "point", "position": [3, 0, 4], "intensity": 2, "color": [9, 9, 9]}]})";
+  const auto points = dir / "points.csv";
+  std::ofstream(points) << "px,py,pz,nx,ny,nz,ex,ey,ez,m\n0,0,0,0,0,2,0,0,10,8\n0,0,0,0,0,-1,0,0,10,8\n";
+  const auto r = run_command(kVlit + " probe --lights " + q(lights.string()) + " --points " + q(points.string()));
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  std::istringstream in(r.out);
+  std::string header, row0, row1;
+  std::getline(in, header);
+  std::getline(in, row0);
+  std::getline(in, row1);
+  CHECK(header == "index,diffuse,specular");
+  // Hand values: |L| = 5, cos = 4/5 (normal normalized by vlit), intensity 2 (colour ignored):
+  // diffuse = 2 * 0.8 / 25, specular = 2 * 0.8^8 (Rv = +Z).
+  double index = -1, diffuse = -1, specular = -1;
+  REQUIRE(std::sscanf(row0.c_str(), "%lf,%lf,%lf", &index, &diffuse, &specular) == 3);
+  CHECK(diffuse == doctest::Approx(2 * 0.8 / 25).epsilon(1e-15));
+  CHECK(specular == doctest::Approx(2 * std::pow(0.8, 8)).epsilon(1e-14));
+  CHECK(row1 == "1,0,0");  // facing away: nothing
+  CHECK(row0.size() > 20);   // 17 significant digits, not a rounded print
+
+  const auto bad = dir / "bad.csv";
+  std::ofstream(bad) << "px,py,pz,nx,ny,nz,ex,ey,ez,m\n0,0,0,0,0,1,0,0,1\n";
+  const auto e = run_command(kVlit + " probe --lights " + q(lights.string()) + " --points " + q(bad.string()));
+  CHECK(e.exit_code == 1);
+  CHECK(e.err.find(bad.string() + ": line 2: expected 10 comma-separated numbers") != std::string::npos);
+}
+
+TEST_CASE("the bundled demo scene is exactly what its generator makes") {
+  const auto dir = vlit::test::temp_dir("cli-demo-scene");
+  const std::string out = (dir / "studio.glb").string();
+  const auto r = run_command(std::string(VLIT_DEMO_GENERATOR) + " " + q(out));
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  CHECK(vlit::test::read_all(out) == vlit::test::read_all(kDemo));
+}

@@ -1,0 +1,127 @@
+// Baking: a single triangle under a known light has a known COLOR_0, read back from the written
+// file; instanced meshes get their own colours; everything else passes through.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "bake/light_vertices.h"
+#include "bake/vertex_color_bake.h"
+#include "gltf/accessor_reader.h"
+#include "gltf/gltf_scene.h"
+#include "gltf/gltf_writer.h"
+#include "support/gltf_builder.h"
+
+using namespace vlit;
+using vlit::test::GltfBuilder;
+
+namespace {
+
+struct Baked {
+  tinygltf::Model model;
+  BakeReport report;
+};
+
+Baked bake_and_reload(GltfBuilder& b, const std::vector<LightSource>& lights, const std::string& name,
+                      const std::string& ext, BakeOptions options = {}) {
+  const auto dir = vlit::test::temp_dir(name);
+  const std::string in = b.write((dir / "in.glb").string());
+  GltfFile file = load_gltf_file(in);
+  std::vector<std::string> warnings;
+  Scene scene = build_scene(file, warnings);
+  scene.lights = lights;
+  const auto light = light_scene_vertices(scene, LightingRequest{});
+  tinygltf::Model model = file.model;
+  Baked out;
+  out.report = bake_vertex_colors(model, scene, light, options);
+  const std::string path = (dir / ("out" + ext)).string();
+  write_gltf(model, in, path);
+  out.model = load_gltf_file(path).model;
+  return out;
+}
+
+LightSource point_light(Vec3d position, double intensity) {
+  LightSource l;
+  l.type = LightType::kPoint;
+  l.position = position;
+  l.intensity = intensity;
+  return l;
+}
+
+}  // namespace
+
+TEST_CASE("one triangle under a point light: COLOR_0 = I cos / d^2 per vertex") {
+  for (const std::string ext : {".glb", ".gltf"}) {
+    CAPTURE(ext);
+    GltfBuilder b;
+    b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}));
+    // Light 2 above the origin with intensity 2: vertex 0 gets 2/4; vertices 1 and 2 are at
+    // distance sqrt 5 with cos = 2/sqrt 5: 2 * (2/sqrt 5) / 5.
+    const Baked baked = bake_and_reload(b, {point_light({0, 0, 2}, 2)}, "one-triangle", ext);
+    const auto& prim = baked.model.meshes[0].primitives[0];
+    REQUIRE(prim.attributes.count("COLOR_0"));
+    const tinygltf::Accessor& acc = baked.model.accessors[prim.attributes.at("COLOR_0")];
+    CHECK(acc.type == TINYGLTF_TYPE_VEC4);
+    CHECK(acc.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    CHECK(acc.normalized);
+    const auto c = read_accessor_as_doubles(baked.model, prim.attributes.at("COLOR_0"), "out");
+    const double expected[3] = {0.5, 2 * (2 / std::sqrt(5.0)) / 5, 2 * (2 / std::sqrt(5.0)) / 5};
+    for (int v = 0; v < 3; ++v) {
+      for (int ch = 0; ch < 3; ++ch) CHECK(c[4 * v + ch] == doctest::Approx(expected[v]).epsilon(1.0 / 65535));
+      CHECK(c[4 * v + 3] == 1.0);
+    }
+    CHECK(baked.report.max_quantization_error <= 0.5 / 65535 + 1e-12);
+    // Viewers must not light it again.
+    REQUIRE(prim.material >= 0);
+    CHECK(baked.model.materials[prim.material].extensions.count("KHR_materials_unlit"));
+  }
+}
+
+TEST_CASE("light above 1 is clipped in unorm formats and counted; float keeps it") {
+  GltfBuilder b;
+  b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}));
+  const Baked unorm = bake_and_reload(b, {point_light({0, 0, 1}, 10)}, "clip8", ".glb", BakeOptions{"COLOR_0", ColorFormat::kUnorm8});
+  CHECK(unorm.report.clipped_vertices == 3);
+  BakeOptions f;
+  f.format = ColorFormat::kFloat;
+  const Baked fl = bake_and_reload(b, {point_light({0, 0, 1}, 10)}, "float", ".glb", f);
+  const auto& prim = fl.model.meshes[0].primitives[0];
+  const auto c = read_accessor_as_doubles(fl.model, prim.attributes.at("COLOR_0"), "out");
+  CHECK(c[0] == doctest::Approx(10.0));
+}
+
+TEST_CASE("an instanced mesh is duplicated so each instance keeps its own light") {
+  GltfBuilder b;
+  const int mesh = b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2});
+  b.add_node(mesh, {0, 0, 0});
+  b.add_node(mesh, {0, 0, -1});  // one unit further from the light
+  const Baked baked = bake_and_reload(b, {point_light({0, 0, 1}, 1)}, "instanced", ".glb");
+  CHECK(baked.report.duplicated_meshes == 1);
+  REQUIRE(baked.model.meshes.size() == 2);
+  CHECK(baked.model.nodes[0].mesh != baked.model.nodes[1].mesh);
+  auto color0 = [&](int node) {
+    const auto& prim = baked.model.meshes[baked.model.nodes[node].mesh].primitives[0];
+    return read_accessor_as_doubles(baked.model, prim.attributes.at("COLOR_0"), "out")[0];
+  };
+  CHECK(color0(0) == doctest::Approx(1.0).epsilon(1e-4));   // 1 / 1^2
+  CHECK(color0(1) == doctest::Approx(0.25).epsilon(1e-4));  // 1 / 2^2
+}
+
+TEST_CASE("everything but the baked attribute passes through") {
+  GltfBuilder b;
+  const int mat = b.add_material({0.5, 0.25, 1, 1}, 0, 0.5);
+  b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {}, {0, 1, 2}, TINYGLTF_MODE_TRIANGLES, mat));
+  b.model().nodes[0].name = "keep me";
+  b.model().extensionsUsed.push_back("EXT_unknown_to_vlit");
+  tinygltf::Value::Object extras;
+  extras["answer"] = tinygltf::Value(42);
+  b.model().nodes[0].extras = tinygltf::Value(extras);
+  const Baked baked = bake_and_reload(b, {point_light({0, 0, 2}, 1)}, "passthrough", ".glb");
+  CHECK(baked.model.nodes[0].name == "keep me");
+  CHECK(baked.model.nodes[0].extras.Get("answer").Get<int>() == 42);
+  CHECK(baked.model.materials[0].pbrMetallicRoughness.baseColorFactor[1] == 0.25);
+  const auto& used = baked.model.extensionsUsed;
+  CHECK(std::find(used.begin(), used.end(), "EXT_unknown_to_vlit") != used.end());
+  // The original POSITION accessor is unchanged.
+  const auto pos = read_accessor_as_doubles(baked.model, baked.model.meshes[0].primitives[0].attributes.at("POSITION"), "out");
+  CHECK(pos == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+}

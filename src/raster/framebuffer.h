@@ -1,0 +1,38 @@
+// A horizontal band of the sample grid (colour + depth per sample), the per-span shading that
+// writes into it (depth test, perspective-correct Gouraud colour), and the box-filter resolve of
+// its samples into image pixels.
+#pragma once
+
+#include <vector>
+
+#include "core/vec3.h"
+#include "raster/image.h"
+#include "raster/triangle_setup.h"
+
+namespace vlit::raster {
+
+class SampleBand {
+ public:
+  // Holds sample rows [row_begin, row_end) of a sample grid `width` samples wide, cleared to the
+  // background colour and the far depth. Reuses its storage across calls.
+  void reset(int width, int row_begin, int row_end, const Vec3f& background);
+
+  // Depth-tests and writes the samples [col_begin, col_end) of sample row `row` covered by t.
+  // A sample is written when its depth is strictly greater (nearer) than the stored one: on an
+  // exact tie the triangle drawn first wins.
+  void shade_span(const SetupTriangle& t, int row, int col_begin, int col_end);
+
+  // Averages each samples_per_side x samples_per_side block (box filter, linear RGB) into the
+  // image pixels of this band. The band must start and end on pixel boundaries.
+  void resolve(int samples_per_side, Image& image) const;
+
+  int row_begin() const { return row_begin_; }
+  int row_end() const { return row_end_; }
+
+ private:
+  int width_ = 0, row_begin_ = 0, row_end_ = 0;
+  std::vector<float> depth_;  // reversed depth (greater is nearer), cleared to -1 (below any surface)
+  std::vector<Vec3f> color_;
+};
+
+}  // namespace vlit::raster

@@ -1,0 +1,78 @@
+// Vertex transform and per-triangle clip / project / snap / setup; see geometry_stage.h.
+#include "raster/geometry_stage.h"
+
+#include <algorithm>
+#include <array>
+
+#include "raster/clip.h"
+
+namespace vlit::raster {
+
+namespace {
+
+constexpr size_t kTriangleChunk = 4096;
+
+// Appends the set-up pieces of triangle (i0, i1, i2) of `mesh`; clip is the transformed positions.
+void setup_one(const DrawMesh& mesh, const std::vector<Vec4d>& clip, uint32_t i0, uint32_t i1, uint32_t i2,
+               const ClipPlanes& planes, const GeometryOptions& options, bool cull,
+               std::vector<SetupTriangle>& out) {
+  const size_t n = clip.size();
+  if (i0 >= n || i1 >= n || i2 >= n) return;
+  const auto vertex = [&](uint32_t i) {
+    const Vec3d color = i < mesh.colors.size() ? Vec3d(mesh.colors[i]) : Vec3d{1, 1, 1};
+    return ClipVertex{clip[i], color};
+  };
+  const ClipVertex a = vertex(i0), b = vertex(i1), c = vertex(i2);
+  if (!is_finite(a.position) || !is_finite(b.position) || !is_finite(c.position)) return;
+
+  std::array<ClipVertex, kMaxClipVertices> polygon;
+  const int count = clip_triangle(a, b, c, planes, polygon);
+  std::array<ScreenVertex, kMaxClipVertices> screen;
+  for (int k = 0; k < count; ++k) {
+    const std::optional<ScreenVertex> s = project_to_screen(polygon[k], options.grid_width, options.grid_height);
+    if (!s) return;
+    screen[k] = *s;
+  }
+  for (int k = 1; k + 1 < count; ++k)  // fan: keeps the winding, shares the inner edges exactly
+    if (auto t = setup_triangle(screen[0], screen[k], screen[k + 1], cull, options.grid_width, options.grid_height))
+      out.push_back(*t);
+}
+
+}  // namespace
+
+std::vector<SetupTriangle> setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_world,
+                                        const GeometryOptions& options) {
+  const ClipPlanes planes = make_clip_planes(options.grid_width, options.grid_height, options.has_far_plane);
+  std::vector<SetupTriangle> result;
+  std::vector<Vec4d> clip;
+  for (const DrawMesh& mesh : meshes) {
+    const bool cull = options.cull_back_faces && !mesh.double_sided;
+    clip.resize(mesh.positions.size());
+    const long long vertex_count = (long long)mesh.positions.size();
+#pragma omp parallel for schedule(static)
+    for (long long i = 0; i < vertex_count; ++i)
+      clip[i] = transform_point_h(clip_from_world, Vec3d(mesh.positions[i]));
+
+    const size_t triangle_count = mesh.indices.size() / 3;
+    const long long chunk_count = (long long)((triangle_count + kTriangleChunk - 1) / kTriangleChunk);
+    std::vector<std::vector<SetupTriangle>> chunks(chunk_count);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (long long chunk = 0; chunk < chunk_count; ++chunk) {
+      const size_t end = std::min(triangle_count, size_t(chunk + 1) * kTriangleChunk);
+      chunks[chunk].reserve(end - size_t(chunk) * kTriangleChunk);
+      for (size_t t = size_t(chunk) * kTriangleChunk; t < end; ++t)
+        setup_one(mesh, clip, mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2], planes,
+                  options, cull, chunks[chunk]);
+    }
+    size_t total = result.size();
+    for (const auto& chunk : chunks) total += chunk.size();
+    result.reserve(total);
+    for (auto& chunk : chunks) {
+      result.insert(result.end(), chunk.begin(), chunk.end());
+      std::vector<SetupTriangle>().swap(chunk);  // release each chunk once copied
+    }
+  }
+  return result;
+}
+
+}  // namespace vlit::raster

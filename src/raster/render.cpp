@@ -1,0 +1,89 @@
+// Orchestration of the pipeline: geometry stage, then bands of rows in parallel; see render.h.
+#include "raster/render.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "raster/fixed_point.h"
+#include "raster/framebuffer.h"
+#include "raster/geometry_stage.h"
+#include "raster/rasterize_triangle.h"
+
+namespace vlit::raster {
+
+namespace {
+
+constexpr int kMaxSamplesPerSide = 8;
+constexpr int kMaxBandRows = 16;                      // image rows per band: many bands balance threads
+constexpr size_t kBandSampleBudget = size_t{1} << 20;  // samples per band buffer (16 MiB)
+
+}  // namespace
+
+int samples_per_side(int samples) {
+  for (int side = 1; side <= kMaxSamplesPerSide; ++side)
+    if (side * side == samples) return side;
+  return 1;
+}
+
+std::string validate_render_options(const RenderOptions& options) {
+  if (options.width <= 0 || options.height <= 0) return "image width and height must be positive";
+  if (samples_per_side(options.samples) * samples_per_side(options.samples) != options.samples)
+    return "samples must be a perfect square from 1 to 64 (1, 4, 16, ...)";
+  const long long side = samples_per_side(options.samples);
+  if (options.width * side > kMaxGridSize || options.height * side > kMaxGridSize)
+    return "image too large: width and height times sqrt(samples) must not exceed " +
+           std::to_string(kMaxGridSize);
+  if (!is_finite(options.background)) return "background colour must be finite";
+  return {};
+}
+
+Image render(const std::vector<DrawMesh>& meshes, const Camera& camera, const RenderOptions& options) {
+  if (!validate_render_options(options).empty()) return {};
+  const int side = samples_per_side(options.samples);
+  Image image{options.width, options.height, std::vector<float>(size_t(options.width) * options.height * 3)};
+  for (size_t i = 0; i < image.rgb.size(); i += 3) {
+    image.rgb[i] = options.background.x;
+    image.rgb[i + 1] = options.background.y;
+    image.rgb[i + 2] = options.background.z;
+  }
+  const std::optional<Mat4d> clip_from_world_m = clip_from_world(camera, double(options.width) / options.height);
+  if (!clip_from_world_m) return image;
+
+  GeometryOptions geometry;
+  geometry.grid_width = options.width * side;
+  geometry.grid_height = options.height * side;
+  geometry.has_far_plane = camera.orthographic || camera.zfar.has_value();
+  geometry.cull_back_faces = options.cull_back_faces;
+  const std::vector<SetupTriangle> triangles = setup_meshes(meshes, *clip_from_world_m, geometry);
+
+  const size_t samples_per_row = size_t(geometry.grid_width) * side;
+  const int band_rows = int(std::clamp<size_t>(kBandSampleBudget / samples_per_row, 1, kMaxBandRows));
+  const int band_count = (options.height + band_rows - 1) / band_rows;
+  const int band_sample_rows = band_rows * side;
+
+  // Bin the triangles by band, keeping draw order, so a band never looks at the others.
+  std::vector<std::vector<uint32_t>> bins(band_count);
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    const SetupTriangle& t = triangles[i];
+    for (int b = t.row_begin / band_sample_rows; b <= (t.row_end - 1) / band_sample_rows; ++b)
+      bins[b].push_back(uint32_t(i));
+  }
+#pragma omp parallel
+  {
+    SampleBand band;  // one buffer per thread, reused across its bands
+#pragma omp for schedule(dynamic, 1)
+    for (int b = 0; b < band_count; ++b) {
+      const int y_end = std::min(options.height, (b + 1) * band_rows);
+      band.reset(geometry.grid_width, b * band_rows * side, y_end * side, options.background);
+      for (const uint32_t index : bins[b]) {
+        const SetupTriangle& t = triangles[index];
+        scan_triangle(t, band.row_begin(), band.row_end(), geometry.grid_width,
+                      [&](int row, int col_begin, int col_end) { band.shade_span(t, row, col_begin, col_end); });
+      }
+      band.resolve(side, image);
+    }
+  }
+  return image;
+}
+
+}  // namespace vlit::raster

@@ -20,6 +20,7 @@ struct BakeArgs {
   double exposure = 1;
   bool no_unlit = false;
   bool quiet = false;
+  bool no_file_lights = false;
 };
 
 bool same_file(const std::string& a, const std::string& b) {
@@ -31,7 +32,7 @@ bool same_file(const std::string& a, const std::string& b) {
 int run_bake(const BakeArgs& args) {
   if (same_file(args.input, args.output))
     throw InputError(args.output, "refusing to overwrite the input; choose another output path");
-  LoadedScene loaded = load_scene(args.input, args.lights);
+  LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
   for (const auto& w : loaded.warnings) print_warning(w);
   if (loaded.scene.lights.empty()) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the bake will be black");
 
@@ -70,13 +71,14 @@ Runner add_bake_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bake", "Light every vertex and store the light as glTF vertex colors (COLOR_0).");
   cmd->add_option("input", args->input, "Input asset (.gltf or .glb); it is never modified")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "Output file (.glb or .gltf); written atomically")->required();
-  cmd->add_option("--lights", args->lights, "LIGHTS.json with the lights to add (docs/lights-json.md)")->check(CLI::ExistingFile);
+  cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")->check(CLI::ExistingFile);
   cmd->add_option("--color-format", args->color_format,
                   "Encoding of the baked colors: unorm16 (default), unorm8 or float")
       ->check(CLI::IsMember({"unorm16", "unorm8", "float"}));
   cmd->add_option("--exposure", args->exposure, "Multiplier applied to the light before encoding (default 1)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
+  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
   cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.");
   return [args] { return run_bake(*args); };

@@ -21,6 +21,7 @@ struct RenderArgs {
   std::vector<double> background{0, 0, 0};
   bool cull_back_faces = false;
   bool quiet = false;
+  bool no_file_lights = false;
 };
 
 raster::Camera to_raster_camera(const SceneCamera& c) {
@@ -41,7 +42,7 @@ raster::Camera to_raster_camera(const SceneCamera& c) {
 }
 
 int run_render(const RenderArgs& args) {
-  LoadedScene loaded = load_scene(args.input, args.lights);
+  LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
   for (const auto& w : loaded.warnings) print_warning(w);
   const Scene& scene = loaded.scene;
   if (scene.lights.empty()) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
@@ -109,7 +110,7 @@ Runner add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Light every vertex and rasterize with Gouraud shading to an sRGB PNG.");
   cmd->add_option("input", args->input, "Input asset (.gltf or .glb)")->required()->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", args->output, "Output PNG; written atomically")->required();
-  cmd->add_option("--lights", args->lights, "LIGHTS.json with the lights to add (docs/lights-json.md)")->check(CLI::ExistingFile);
+  cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")->check(CLI::ExistingFile);
   cmd->add_option("--width", args->width, "Image width in pixels (default 800)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", args->height, "Image height in pixels (default 600)")->check(CLI::Range(1, 16384));
   cmd->add_option("--samples", args->samples, "Samples per pixel for anti-aliasing: 1, 4 (default), 16, 64")
@@ -117,6 +118,7 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--exposure", args->exposure, "Multiplier applied before sRGB encoding (default 1)")->check(CLI::PositiveNumber);
   cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
+  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
   cmd->footer("The camera is the glTF's first camera if it has one, otherwise a 3/4 view framing the whole scene.");
   return [args] { return run_render(*args); };

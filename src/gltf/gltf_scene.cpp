@@ -1,6 +1,7 @@
 #include "gltf/gltf_scene.h"
 
 #include <cmath>
+#include <algorithm>
 #include <functional>
 
 #include "core/affine.h"
@@ -171,6 +172,49 @@ std::optional<SceneCamera> read_camera(const tinygltf::Camera& cam, const Affine
   return c;
 }
 
+// KHR_lights_punctual light `index`, placed by the node's world transform (the light sits at the
+// node's origin and points down its local -Z). glTF units map directly onto our kernels:
+// point and spot intensity in candela with inverse-square falloff, directional in lux.
+std::optional<LightSource> read_punctual_light(const GltfFile& file, int node_index, int index, const Affine& world,
+                                               std::vector<std::string>& warnings) {
+  const tinygltf::Model& model = file.model;
+  const std::string where = "nodes[" + std::to_string(node_index) + "]";
+  if (index < 0 || static_cast<std::size_t>(index) >= model.lights.size()) {
+    warnings.push_back(file.path + ": " + where + ": KHR_lights_punctual light " + std::to_string(index) +
+                       " does not exist; ignored");
+    return std::nullopt;
+  }
+  const tinygltf::Light& l = model.lights[index];
+  LightSource out;
+  out.name = l.name.empty() ? file.path + ": lights[" + std::to_string(index) + "]" : l.name;
+  if (l.color.size() == 3) out.color = {l.color[0], l.color[1], l.color[2]};
+  out.intensity = l.intensity;
+  out.falloff = 2;
+  if (l.range > 0) out.range = l.range;
+  out.position = world.apply_point({0, 0, 0});
+  out.direction = normalize(world.apply_vector({0, 0, -1}));
+  if (l.type == "point") {
+    out.type = LightType::kPoint;
+  } else if (l.type == "directional") {
+    out.type = LightType::kDirectional;
+  } else if (l.type == "spot") {
+    out.type = LightType::kSpot;
+    const double outer = std::clamp(l.spot.outerConeAngle, 0.0, M_PI / 2);
+    const double inner = std::clamp(l.spot.innerConeAngle, 0.0, outer);
+    out.cos_inner = std::cos(inner);
+    out.cos_outer = std::cos(outer);
+  } else {
+    warnings.push_back(file.path + ": lights[" + std::to_string(index) + "]: unknown type \"" + l.type + "\"; ignored");
+    return std::nullopt;
+  }
+  const bool finite = std::isfinite(out.intensity) && out.intensity >= 0 && is_finite(out.color) && is_finite(out.position);
+  if (!finite || (out.type != LightType::kPoint && length_squared(out.direction) == 0)) {
+    warnings.push_back(file.path + ": lights[" + std::to_string(index) + "]: invalid intensity, colour or transform; ignored");
+    return std::nullopt;
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> triangle_list(int mode, const std::vector<std::uint32_t>& idx) {
@@ -226,6 +270,13 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
     }
     if (node.camera >= 0 && static_cast<std::size_t>(node.camera) < model.cameras.size() && !scene.camera)
       scene.camera = read_camera(model.cameras[node.camera], world);
+    if (const auto ext = node.extensions.find("KHR_lights_punctual"); ext != node.extensions.end() &&
+                                                                   ext->second.Has("light")) {
+      const tinygltf::Value& light_ref = ext->second.Get("light");
+      if (light_ref.IsInt())
+        if (auto light = read_punctual_light(file, index, light_ref.Get<int>(), world, warnings))
+          scene.lights.push_back(*light);
+    }
     for (int child : node.children) visit(child, world);
   };
   for (int r : roots) visit(r, Affine{});

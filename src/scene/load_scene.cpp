@@ -6,13 +6,14 @@
 
 namespace vlit {
 
-LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path) {
+LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights) {
   LoadedScene loaded;
   if (!is_gltf_path(asset_path))
     throw InputError(asset_path, "unsupported file type (expected .gltf or .glb)");
   loaded.gltf = load_gltf_file(asset_path);
   loaded.warnings = loaded.gltf->warnings;
   loaded.scene = build_scene(*loaded.gltf, loaded.warnings);
+  if (!use_file_lights) loaded.scene.lights.clear();
   if (!lights_path.empty()) {
     auto lights = read_lights_json(lights_path);
     loaded.scene.lights.insert(loaded.scene.lights.end(), lights.begin(), lights.end());

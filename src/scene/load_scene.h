@@ -18,6 +18,8 @@ struct LoadedScene {
 };
 
 // Throws InputError naming the file for anything it cannot read.
-LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path);
+// The file's own lights (KHR_lights_punctual) are kept unless use_file_lights is false; the
+// lights of LIGHTS.json are added to them.
+LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights = true);
 
 }  // namespace vlit

@@ -3,6 +3,7 @@
 // loop runs in. shade() is the one place that dispatches on the light model.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -27,7 +28,19 @@ struct PreparedLight {
   LightType type = LightType::kPoint;
   Vec3<T> radiance{1, 1, 1};  // colour x intensity
   Kernel kernel;
+  // glTF KHR_lights_punctual range (point and spot): 0 = unlimited.
+  T range{0};
+  Vec3<T> position;  // where the range is measured from
 };
+
+// The range window recommended by KHR_lights_punctual: clamp(1 - (d / range)^4, 0, 1), so the
+// light fades smoothly to zero at `range` instead of being cut off.
+template <class T>
+T range_window(const PreparedLight<T>& light, const Vec3<T>& p) {
+  if (!(light.range > T(0))) return T(1);
+  const T ratio2 = length_squared(p - light.position) / (light.range * light.range);
+  return std::clamp(T(1) - ratio2 * ratio2, T(0), T(1));
+}
 
 template <class T>
 PreparedLight<T> prepare_light(const LightSource& light) {
@@ -35,6 +48,10 @@ PreparedLight<T> prepare_light(const LightSource& light) {
   PreparedLight<T> out;
   out.type = light.type;
   out.radiance = v(light.color * light.intensity);
+  if (light.range && (light.type == LightType::kPoint || light.type == LightType::kSpot)) {
+    out.range = T(*light.range);
+    out.position = v(light.position);
+  }
   switch (light.type) {
     case LightType::kPoint:
       out.kernel = PointLight<T>{v(light.position), T(light.falloff)};
@@ -56,7 +73,9 @@ PreparedLight<T> prepare_light(const LightSource& light) {
 template <class T>
 Response<T> shade(const PreparedLight<T>& light, const ShadingPoint<T>& sp, const ShadeOptions& options) {
   const bool spec = options.with_specular && options.specular.method != SpecularMethod::kNone;
-  return std::visit(
+  const T window = range_window(light, sp.p);
+  if (window <= T(0)) return {};
+  Response<T> r = std::visit(
       [&](const auto& k) -> Response<T> {
         using K = std::decay_t<decltype(k)>;
         if constexpr (std::is_same_v<K, PointLight<T>>) return shade_point(k, sp, spec);
@@ -64,6 +83,9 @@ Response<T> shade(const PreparedLight<T>& light, const ShadingPoint<T>& sp, cons
         else return shade_spot(k, sp, spec);
       },
       light.kernel);
+  r.diffuse *= window;
+  r.specular *= window;
+  return r;
 }
 
 }  // namespace vlit

@@ -150,3 +150,36 @@ TEST_CASE("real assets load: Box, its interleaved variant, the sparse sample") {
   // Same box, interleaved storage: same world-space vertices.
   for (std::size_t i = 0; i < 24; ++i) check_vec(inter.primitives[0].positions[i], box.primitives[0].positions[i]);
 }
+
+TEST_CASE("KHR_lights_punctual lights are placed by their node's transform") {
+  GltfBuilder b;
+  b.add_node(b.add_mesh(kTriangle, {}, {0, 1, 2}));
+  tinygltf::Light spot;
+  spot.type = "spot";
+  spot.intensity = 7;
+  spot.color = {1, 0.5, 0.25};
+  spot.range = 3;
+  spot.spot.innerConeAngle = 0.1;
+  spot.spot.outerConeAngle = 0.3;
+  b.model().lights.push_back(spot);
+  // The node sits at (0, 0, 4) rotated 180 degrees about X: local -Z points to world +Z... and a
+  // parent moves it by (1, 0, 0). Expected: position (1, 0, 4), direction (0, 0, 1).
+  const int parent = b.add_node(-1, {1, 0, 0});
+  const int node = b.add_node(-1, {0, 0, 4}, {}, {1, 0, 0, 0}, parent);
+  tinygltf::Value::Object ref;
+  ref["light"] = tinygltf::Value(0);
+  b.model().nodes[node].extensions["KHR_lights_punctual"] = tinygltf::Value(ref);
+  b.model().extensionsUsed.push_back("KHR_lights_punctual");
+  const Scene s = load(b, "punctual");
+  REQUIRE(s.lights.size() == 1);
+  const LightSource& l = s.lights[0];
+  CHECK(l.type == LightType::kSpot);
+  CHECK(l.intensity == 7);
+  CHECK(l.color.y == 0.5);
+  REQUIRE(l.range.has_value());
+  CHECK(*l.range == 3);
+  check_vec(l.position, {1, 0, 4});
+  check_vec(l.direction, {0, 0, 1});
+  CHECK(l.cos_inner == doctest::Approx(std::cos(0.1)));
+  CHECK(l.cos_outer == doctest::Approx(std::cos(0.3)));
+}

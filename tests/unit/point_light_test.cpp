@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "directional_light.h"
+#include "shading/prepared_light.h"
 #include "point_light.h"
 #include "spot_light.h"
 
@@ -77,4 +78,18 @@ TEST_CASE("spot light: point light inside the inner cone, dark outside the outer
   // Tilted by 0.5 rad: outside the outer cone.
   spot.direction = {std::sin(0.5), 0, -std::cos(0.5)};
   CHECK(shade_spot(spot, sp, true).diffuse == 0.0);
+}
+
+TEST_CASE("glTF range: the KHR_lights_punctual window 1 - (d/r)^4, zero beyond") {
+  const auto sp = up_point_seen_from_above();
+  LightSource l;
+  l.type = LightType::kPoint;
+  l.position = {0, 0, 2};
+  l.range = 4.0;
+  ShadeOptions options;
+  const PreparedLight<double> light = prepare_light<double>(l);
+  // d = 2, r = 4: window = 1 - (1/2)^4 = 15/16, on top of 1/d^2 = 1/4.
+  CHECK(shade(light, sp, options).diffuse == doctest::Approx(0.25 * 15.0 / 16.0).epsilon(1e-15));
+  l.range = 1.5;  // beyond range
+  CHECK(shade(prepare_light<double>(l), sp, options).diffuse == 0.0);
 }

@@ -33,6 +33,7 @@ int run_bake(const BakeArgs& args) {
   if (same_file(args.input, args.output))
     throw InputError(args.output, "refusing to overwrite the input; choose another output path");
   LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
+  if (!loaded.gltf) throw InputError(args.input, "bake writes vertex colors into glTF and needs a .gltf or .glb input");
   for (const auto& w : loaded.warnings) print_warning(w);
   if (loaded.scene.lights.empty()) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the bake will be black");
 

@@ -3,16 +3,21 @@
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
 #include "io/lights_json.h"
+#include "mesh/mesh_file.h"
 
 namespace vlit {
 
 LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights) {
   LoadedScene loaded;
-  if (!is_gltf_path(asset_path))
-    throw InputError(asset_path, "unsupported file type (expected .gltf or .glb)");
-  loaded.gltf = load_gltf_file(asset_path);
-  loaded.warnings = loaded.gltf->warnings;
-  loaded.scene = build_scene(*loaded.gltf, loaded.warnings);
+  if (is_gltf_path(asset_path)) {
+    loaded.gltf = load_gltf_file(asset_path);
+    loaded.warnings = loaded.gltf->warnings;
+    loaded.scene = build_scene(*loaded.gltf, loaded.warnings);
+  } else if (is_mesh_path(asset_path)) {
+    loaded.scene = load_mesh_file(asset_path, loaded.warnings);
+  } else {
+    throw InputError(asset_path, "unsupported file type (expected .gltf, .glb, .obj, .ply, .off or .stl)");
+  }
   if (!use_file_lights) loaded.scene.lights.clear();
   if (!lights_path.empty()) {
     auto lights = read_lights_json(lights_path);

@@ -33,9 +33,10 @@ std::string validate_camera(const Camera& camera);
 std::optional<Mat4d> clip_from_world(const Camera& camera, double image_aspect);
 
 // A perspective camera that frames the box [lo, hi] from a 3/4 view (from +X, +Y, +Z of the
-// box centre, looking down about 25 degrees), with yfov = 0.8, the given aspect (width/height),
-// the bounding sphere inside the view frustum with a 5% margin, and znear/zfar bracketing the
-// sphere. An empty, flat or non-finite box is handled: a degenerate extent becomes a unit one.
+// box centre, looking down about 25 degrees), yfov = 0.8, the given aspect (width/height), at the
+// smallest distance where all eight corners are inside 90% of the image width and height, with
+// znear/zfar bracketing the box. An empty or non-finite box frames the unit box at the origin, a
+// point frames a unit box around it.
 Camera frame_bounds(const Vec3d& lo, const Vec3d& hi, double aspect);
 
 }  // namespace vlit::raster

@@ -291,7 +291,7 @@ TEST_CASE("render: output is bit-identical whatever the thread count") {
   CHECK(same_pixels(one, three));
 }
 
-TEST_CASE("frame_bounds: the whole box lands inside the image") {
+TEST_CASE("frame_bounds: the whole box lands inside the image, filling 90% of it") {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> log_scale(-3, 6), unit(-1, 1);
   for (int trial = 0; trial < 200; ++trial) {
@@ -304,6 +304,7 @@ TEST_CASE("frame_bounds: the whole box lands inside the image") {
     REQUIRE(validate_camera(cam).empty());
     const auto clip_from_world_m = clip_from_world(cam, aspect);
     REQUIRE(clip_from_world_m);
+    double widest = 0;
     for (int corner = 0; corner < 8; ++corner) {
       const Vec3d p{centre.x + (corner & 1 ? half.x : -half.x), centre.y + (corner & 2 ? half.y : -half.y),
                     centre.z + (corner & 4 ? half.z : -half.z)};
@@ -313,7 +314,9 @@ TEST_CASE("frame_bounds: the whole box lands inside the image") {
       CHECK(std::abs(h.x / h.w) < 1.0);
       CHECK(std::abs(h.y / h.w) < 1.0);
       CHECK(std::abs(h.z / h.w) < 1.0);
+      widest = std::max({widest, std::abs(h.x / h.w), std::abs(h.y / h.w)});
     }
+    CHECK(widest == doctest::Approx(0.9).epsilon(1e-6));  // tight: the box fills 90% of one axis
   }
   // Degenerate boxes still give a usable camera.
   CHECK(validate_camera(frame_bounds({0, 0, 0}, {0, 0, 0}, 1.5)).empty());

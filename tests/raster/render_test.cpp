@@ -323,3 +323,46 @@ TEST_CASE("frame_bounds: the whole box lands inside the image, filling 90% of it
   CHECK(validate_camera(frame_bounds({1, 1, 1}, {-1, -1, -1}, 1.5)).empty());
   CHECK(validate_camera(frame_bounds({NAN, 0, 0}, {1, 1, 1}, 0)).empty());
 }
+
+TEST_CASE("render: reversed float depth separates surfaces far away with an infinite projection") {
+  // Two quads 1000.0 and 1000.5 units away, znear = 0.01, no zfar: stored depths znear/distance =
+  // 1.0e-5 and 0.9995e-5 differ by 5e-4 relative, far above float resolution. A conventional
+  // [0, 1] window depth (1 - znear/distance) would round both to the same float.
+  Camera cam = camera_at({0, 0, 0}, {0, 0, -1});
+  cam.znear = 0.01;
+  cam.zfar.reset();
+  RenderOptions options;
+  options.width = options.height = 16;
+  const DrawMesh near_quad = quad(-1000.0f, 400.0f, {1, 0, 0});
+  const DrawMesh far_quad = quad(-1000.5f, 400.0f, {0, 1, 0});
+  CHECK(float(1.0 - 0.01 / 1000.0) == float(1.0 - 0.01 / 1000.5));  // why reversed depth is needed
+  for (const auto& order : {std::vector<DrawMesh>{near_quad, far_quad}, std::vector<DrawMesh>{far_quad, near_quad}}) {
+    const Image image = render(order, cam, options);
+    CHECK(pixel(image, 8, 8)[0] == 1.0f);
+    CHECK(pixel(image, 8, 8)[1] == 0.0f);
+  }
+}
+
+TEST_CASE("render: a very wide image with 16 samples (one-row bands) resolves correctly") {
+  Camera cam;
+  cam.orthographic = true;
+  cam.znear = 0;
+  cam.zfar = 10;
+  DrawMesh m;  // covers the left half of the view: x in [-1, 0]
+  m.positions = {{-1, -1, -1}, {0, -1, -1}, {0, 1, -1}, {-1, 1, -1}};
+  m.colors.assign(4, Vec3f{1, 1, 1});
+  m.indices = {0, 1, 2, 0, 2, 3};
+  RenderOptions options;
+  options.width = kMaxGridSize / 4;  // 131072 pixels, 524288 samples wide
+  options.height = 3;
+  options.samples = 16;
+  REQUIRE(validate_render_options(options).empty());
+  const Image image = render({m}, cam, options);
+  REQUIRE(image.width == options.width);
+  for (int y = 0; y < 3; ++y) {
+    CHECK(pixel(image, 0, y)[0] == 1.0f);
+    CHECK(pixel(image, options.width / 2 - 1, y)[0] == 1.0f);
+    CHECK(pixel(image, options.width / 2, y)[0] == 0.0f);
+    CHECK(pixel(image, options.width - 1, y)[0] == 0.0f);
+  }
+}

@@ -28,6 +28,7 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const Lighting
     // Chunks keep progress reports on the calling thread without locks in the inner loop.
     const std::size_t chunk = 1 << 14;
     for (std::size_t begin = 0; begin < n; begin += chunk) {
+      if (request.cancel && request.cancel->load()) return out;
       const long end = static_cast<long>(std::min(n, begin + chunk));
 #pragma omp parallel for schedule(static)
       for (long v = static_cast<long>(begin); v < end; ++v) {

@@ -4,6 +4,7 @@
 // multiplier; the renderer combines both with the material.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -23,6 +24,8 @@ struct LightingRequest {
   std::optional<Vec3d> eye;  // specular is evaluated only with an eye
   // Called from the calling thread with (vertices done, vertices total); may be empty.
   std::function<void(std::size_t, std::size_t)> progress;
+  // Polled between chunks of vertices: when true, lighting stops early (results incomplete).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // One VertexLight per scene primitive, in the same order. Deterministic: the result does not

@@ -1,9 +1,12 @@
 #include "bake/vertex_color_bake.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <map>
+
+#include "gltf/accessor_reader.h"
 
 namespace vlit {
 namespace {
@@ -39,6 +42,7 @@ void append_aligned(std::vector<unsigned char>& data, const void* bytes, std::si
 
 BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const std::vector<VertexLight>& light,
                               const BakeOptions& options) {
+  const std::string file = "<model>";
   BakeReport report;
   const auto mesh_of_node = unshare_meshes(model, scene, report.duplicated_meshes);
 
@@ -54,33 +58,50 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
     const std::size_t n = sp.positions.size();
     const auto& diffuse = light[i].diffuse;
 
+    // The colours to store, RGBA: light x exposure, times the old colour in multiply mode.
+    std::vector<std::array<double, 4>> rgba(n);
+    for (std::size_t v = 0; v < n; ++v)
+      rgba[v] = {diffuse[v].x * options.exposure, diffuse[v].y * options.exposure, diffuse[v].z * options.exposure, 1.0};
+    const auto existing = prim.attributes.find(options.target);
+    if (existing != prim.attributes.end()) {
+      ++report.replaced_attributes;
+      if (options.mode == BakeMode::kMultiply) {
+        const std::vector<double> old = read_accessor_as_doubles(model, existing->second, file);
+        const int comps = n > 0 ? static_cast<int>(old.size() / n) : 0;
+        if ((comps == 3 || comps == 4) && old.size() == n * comps)
+          for (std::size_t v = 0; v < n; ++v) {
+            for (int ch = 0; ch < 3; ++ch) rgba[v][ch] *= old[v * comps + ch];
+            if (comps == 4) rgba[v][3] = old[v * comps + 3];
+          }
+      }
+    }
+
     const std::size_t offset = (buffer.data.size() + 3) / 4 * 4;
     std::size_t byte_length = 0;
     int component_type = 0;
     int type = TINYGLTF_TYPE_VEC4;
     bool normalized = true;
     if (options.format == ColorFormat::kFloat) {
-      std::vector<float> values(n * 3);
-      for (std::size_t v = 0; v < n; ++v) {
-        const Vec3f c = diffuse[v] * static_cast<float>(options.exposure);
-        values[3 * v] = c.x; values[3 * v + 1] = c.y; values[3 * v + 2] = c.z;
-      }
+      std::vector<float> values(n * 4);
+      for (std::size_t v = 0; v < n; ++v)
+        for (int ch = 0; ch < 4; ++ch) {
+          const double x = rgba[v][ch];
+          values[4 * v + ch] = std::isfinite(x) && x > 0 ? static_cast<float>(x) : 0.0f;
+        }
       append_aligned(buffer.data, values.data(), values.size() * sizeof(float));
       byte_length = values.size() * sizeof(float);
       component_type = TINYGLTF_COMPONENT_TYPE_FLOAT;
-      type = TINYGLTF_TYPE_VEC3;
       normalized = false;
     } else {
-      // Normalized integers, VEC4 so every element is 4-byte aligned; alpha = 1.
+      // Normalized integers, VEC4 so every element is 4-byte aligned.
       const bool wide = options.format == ColorFormat::kUnorm16;
       const double max_code = wide ? 65535.0 : 255.0;
       std::vector<std::uint16_t> codes16;
       std::vector<std::uint8_t> codes8;
       for (std::size_t v = 0; v < n; ++v) {
-        const Vec3f c = diffuse[v];
         bool clipped = false;
         for (int ch = 0; ch < 4; ++ch) {
-          double x = ch == 3 ? 1.0 : c[ch] * options.exposure;
+          double x = rgba[v][ch];
           if (!(x >= 0)) x = 0;  // also catches NaN
           if (x > 1) { clipped = true; x = 1; }
           const double code = std::round(x * max_code);
@@ -117,7 +138,6 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
     acc.type = type;
     model.accessors.push_back(acc);
 
-    if (prim.attributes.count(options.target)) ++report.replaced_attributes;
     prim.attributes[options.target] = static_cast<int>(model.accessors.size()) - 1;
     report.vertices += n;
   }

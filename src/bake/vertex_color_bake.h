@@ -16,8 +16,15 @@ namespace vlit {
 
 enum class ColorFormat { kUnorm16, kUnorm8, kFloat };
 
+// What to do when the primitive already has the target attribute.
+enum class BakeMode {
+  kReplace,   // store the light (the old colours are dropped; the caller warns)
+  kMultiply,  // store old colour x light (the old alpha is kept)
+};
+
 struct BakeOptions {
-  std::string target = "COLOR_0";
+  std::string target = "COLOR_0";  // COLOR_n, or a custom attribute name starting with "_"
+  BakeMode mode = BakeMode::kReplace;
   ColorFormat format = ColorFormat::kUnorm16;
   double exposure = 1;      // multiplies the light before encoding
   bool mark_unlit = true;   // add KHR_materials_unlit so viewers do not light the asset again
@@ -27,7 +34,7 @@ struct BakeReport {
   std::size_t vertices = 0;
   std::size_t clipped_vertices = 0;     // a channel above 1 clamped (unorm formats only)
   double max_quantization_error = 0;    // largest |stored - exact| over unclipped channels
-  std::size_t replaced_attributes = 0;  // primitives whose existing target attribute was replaced
+  std::size_t replaced_attributes = 0;  // primitives whose existing target attribute was replaced or multiplied
   std::size_t duplicated_meshes = 0;
 };
 

@@ -1,68 +1,145 @@
-// vlit bake IN.gltf|IN.glb --lights LIGHTS.json -o OUT.glb|OUT.gltf
+// vlit bake IN... --lights LIGHTS.json -o OUT
+// One input and a file name: bake one file. Several inputs, a directory or a glob pattern, or an
+// existing directory as OUT: a batch into the directory OUT, keeping going when a file fails.
+#include <algorithm>
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <glob.h>
 #include <iostream>
 
-#include "bake/light_vertices.h"
-#include "bake/vertex_color_bake.h"
+#include "bake/bake_file.h"
 #include "cli/commands.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
-#include "gltf/gltf_writer.h"
-#include "scene/load_scene.h"
+#include "gltf/gltf_file.h"
 
 namespace vlit::cli {
 namespace {
 
+namespace fs = std::filesystem;
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_interrupt(int) { g_interrupted.store(true); }
+
 struct BakeArgs {
-  std::string input, output, lights;
+  std::vector<std::string> inputs;
+  std::string output, lights;
   std::string color_format = "unorm16";
+  std::string mode = "replace";
+  std::string target = "COLOR_0";
   double exposure = 1;
   bool no_unlit = false;
-  bool quiet = false;
   bool no_file_lights = false;
+  bool quiet = false;
 };
 
-bool same_file(const std::string& a, const std::string& b) {
+// An input argument as a list of glTF files: a file as is, a directory searched recursively, a
+// pattern with * ? [ expanded (for shells that pass it through quoted). Each file is paired with
+// its path relative to the argument's root, which names its output in a batch.
+std::vector<std::pair<std::string, fs::path>> expand_input(const std::string& arg) {
+  std::vector<std::pair<std::string, fs::path>> files;
   std::error_code ec;
-  if (std::filesystem::equivalent(a, b, ec)) return true;
-  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+  if (fs::is_directory(arg, ec)) {
+    for (auto it = fs::recursive_directory_iterator(arg, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+      if (it->is_regular_file(ec) && is_gltf_path(it->path().string()))
+        files.emplace_back(it->path().string(), fs::relative(it->path(), arg, ec));
+    std::sort(files.begin(), files.end());
+    if (files.empty()) throw InputError(arg, "directory holds no .gltf or .glb file");
+  } else if (!fs::exists(arg, ec) && arg.find_first_of("*?[") != std::string::npos) {
+    glob_t g{};
+    if (::glob(arg.c_str(), 0, nullptr, &g) == 0)
+      for (std::size_t i = 0; i < g.gl_pathc; ++i) files.emplace_back(g.gl_pathv[i], fs::path(g.gl_pathv[i]).filename());
+    ::globfree(&g);
+    if (files.empty()) throw InputError(arg, "pattern matches no file");
+  } else {
+    if (!fs::is_regular_file(arg, ec)) throw InputError(arg, "no such file");
+    files.emplace_back(arg, fs::path(arg).filename());
+  }
+  return files;
+}
+
+BakeFileOptions file_options(const BakeArgs& args) {
+  BakeFileOptions o;
+  o.lights_path = args.lights;
+  o.use_file_lights = !args.no_file_lights;
+  o.encode.exposure = args.exposure;
+  o.encode.mark_unlit = !args.no_unlit;
+  o.encode.target = args.target;
+  o.encode.mode = args.mode == "multiply" ? BakeMode::kMultiply : BakeMode::kReplace;
+  o.encode.format = args.color_format == "unorm8" ? ColorFormat::kUnorm8
+                    : args.color_format == "float" ? ColorFormat::kFloat : ColorFormat::kUnorm16;
+  o.cancel = &g_interrupted;
+  return o;
+}
+
+void print_summary(const std::string& output, const BakeFileResult& r, const std::string& format) {
+  std::fprintf(stderr, "baked %zu vertices, %zu lights, into %s (%s", r.report.vertices, r.lights, output.c_str(), format.c_str());
+  if (format != "float")
+    std::fprintf(stderr, "; max quantization error %.3g; %zu vertices clipped above 1", r.report.max_quantization_error,
+                 r.report.clipped_vertices);
+  std::fprintf(stderr, ")\n");
 }
 
 int run_bake(const BakeArgs& args) {
-  if (same_file(args.input, args.output))
-    throw InputError(args.output, "refusing to overwrite the input; choose another output path");
-  LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
-  if (!loaded.gltf) throw InputError(args.input, "bake writes vertex colors into glTF and needs a .gltf or .glb input");
-  for (const auto& w : loaded.warnings) print_warning(w);
-  if (loaded.scene.lights.empty()) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the bake will be black");
-
-  Progress progress("lighting " + args.input, !args.quiet);
-  LightingRequest request;
-  request.shade.with_specular = false;  // a bake stores the view-independent diffuse light
-  request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
-  const auto light = light_scene_vertices(loaded.scene, request);
-  progress.finish();
-
-  BakeOptions options;
-  options.exposure = args.exposure;
-  options.mark_unlit = !args.no_unlit;
-  options.format = args.color_format == "unorm8" ? ColorFormat::kUnorm8
-                   : args.color_format == "float" ? ColorFormat::kFloat : ColorFormat::kUnorm16;
-  tinygltf::Model model = loaded.gltf->model;
-  const BakeReport report = bake_vertex_colors(model, loaded.scene, light, options);
-  if (report.replaced_attributes > 0)
-    print_warning(args.input + ": replaced the existing " + options.target + " of " +
-                  std::to_string(report.replaced_attributes) + " primitive(s)");
-  write_gltf(std::move(model), args.input, args.output);
-  if (!args.quiet) {
-    std::fprintf(stderr, "baked %zu vertices into %s (%s", report.vertices, args.output.c_str(), args.color_format.c_str());
-    if (options.format != ColorFormat::kFloat)
-      std::fprintf(stderr, ", max quantization error %.3g, %zu vertices clipped above 1", report.max_quantization_error,
-                   report.clipped_vertices);
-    std::fprintf(stderr, ")\n");
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  std::vector<std::pair<std::string, fs::path>> files;
+  bool batch = args.inputs.size() > 1;
+  for (const auto& arg : args.inputs) {
+    std::error_code ec;
+    if (fs::is_directory(arg, ec) || (!fs::exists(arg, ec) && arg.find_first_of("*?[") != std::string::npos)) batch = true;
+    const auto expanded = expand_input(arg);
+    files.insert(files.end(), expanded.begin(), expanded.end());
   }
-  return 0;
+  std::error_code ec;
+  if (fs::is_directory(args.output, ec)) batch = true;
+
+  BakeFileOptions options = file_options(args);
+  if (!batch) {
+    Progress progress("lighting " + files[0].first, !args.quiet);
+    options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+    const BakeFileResult r = bake_file(files[0].first, args.output, options);
+    progress.finish();
+    for (const auto& w : r.warnings) print_warning(w);
+    if (!args.quiet) print_summary(args.output, r, args.color_format);
+    return 0;
+  }
+
+  // Batch: OUT is a directory; each input keeps its relative path and its extension.
+  if (!fs::exists(args.output, ec)) fs::create_directories(args.output, ec);
+  if (!fs::is_directory(args.output, ec)) throw InputError(args.output, "a batch needs -o to be a directory");
+  std::vector<std::string> failures;
+  Progress progress("baking", !args.quiet);
+  std::size_t done = 0;
+  for (const auto& [input, relative] : files) {
+    if (g_interrupted.load()) break;
+    const fs::path output = fs::path(args.output) / relative;
+    try {
+      fs::create_directories(output.parent_path(), ec);
+      const BakeFileResult r = bake_file(input, output.string(), options);
+      progress.finish();
+      for (const auto& w : r.warnings) print_warning(w);
+    } catch (const InputError& e) {
+      progress.finish();
+      print_error(e.what());
+      failures.push_back(input);
+    } catch (const std::exception& e) {
+      progress.finish();
+      print_error(input + ": " + e.what());
+      failures.push_back(input);
+    }
+    progress.update(++done, files.size());
+  }
+  progress.finish();
+  const std::size_t skipped = files.size() - done;
+  if (!args.quiet || !failures.empty() || skipped > 0)
+    std::fprintf(stderr, "%zu of %zu files baked into %s; %zu failed%s\n", done - failures.size(), files.size(),
+                 args.output.c_str(), failures.size(),
+                 skipped > 0 ? (", " + std::to_string(skipped) + " not started (interrupted)").c_str() : "");
+  if (g_interrupted.load()) return 130;
+  return failures.empty() ? 0 : 1;
 }
 
 }  // namespace
@@ -70,18 +147,28 @@ int run_bake(const BakeArgs& args) {
 Runner add_bake_command(CLI::App& app) {
   auto args = std::make_shared<BakeArgs>();
   CLI::App* cmd = app.add_subcommand("bake", "Light every vertex and store the light as glTF vertex colors (COLOR_0).");
-  cmd->add_option("input", args->input, "Input asset (.gltf or .glb); it is never modified")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", args->output, "Output file (.glb or .gltf); written atomically")->required();
-  cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")->check(CLI::ExistingFile);
-  cmd->add_option("--color-format", args->color_format,
-                  "Encoding of the baked colors: unorm16 (default), unorm8 or float")
+  cmd->add_option("inputs", args->inputs,
+                  "Input assets (.gltf or .glb), directories (searched recursively) or quoted glob patterns; "
+                  "inputs are never modified")
+      ->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Output file (.glb or .gltf) for one input; for several inputs, a directory")
+      ->required();
+  cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--target", args->target, "Attribute that receives the light (default COLOR_0)");
+  cmd->add_option("--mode", args->mode, "When the attribute exists: replace (default, with a warning) or multiply")
+      ->check(CLI::IsMember({"replace", "multiply"}));
+  cmd->add_option("--color-format", args->color_format, "Encoding of the baked colors: unorm16 (default), unorm8 or float")
       ->check(CLI::IsMember({"unorm16", "unorm8", "float"}));
   cmd->add_option("--exposure", args->exposure, "Multiplier applied to the light before encoding (default 1)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
   cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
-  cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
-  cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
+  cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.\n"
+              "Outputs are written atomically; a failed or interrupted file leaves no output. A batch keeps going\n"
+              "when a file fails and exits 1 with a summary.");
   return [args] { return run_bake(*args); };
 }
 

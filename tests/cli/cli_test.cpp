@@ -158,3 +158,31 @@ TEST_CASE("the bundled demo scene is exactly what its generator makes") {
   REQUIRE_MESSAGE(r.exit_code == 0, r.err);
   CHECK(vlit::test::read_all(out) == vlit::test::read_all(kDemo));
 }
+
+TEST_CASE("batch bake: a directory of inputs into a directory, failures reported, others baked") {
+  const auto dir = vlit::test::temp_dir("cli-batch");
+  const auto in = dir / "in";
+  std::filesystem::create_directories(in / "sub");
+  std::filesystem::copy_file(kDemo, in / "a.glb");
+  std::filesystem::copy_file(kDemo, in / "sub" / "b.glb");
+  std::ofstream(in / "broken.gltf") << "{ not json";
+  const auto out = dir / "out";
+  const auto r = run_command(kVlit + " bake " + q(in.string()) + " --lights " + q(kDemoLights) + " -o " + q(out.string()));
+  CHECK(r.exit_code == 1);  // one file failed
+  CHECK(r.err.find((in / "broken.gltf").string() + ": not a valid glTF 2.0 file") != std::string::npos);
+  CHECK(r.err.find("2 of 3 files baked") != std::string::npos);
+  CHECK(std::filesystem::exists(out / "a.glb"));
+  CHECK(std::filesystem::exists(out / "sub" / "b.glb"));
+  CHECK_FALSE(std::filesystem::exists(out / "broken.gltf"));
+  CHECK(load_gltf_file((out / "sub" / "b.glb").string()).model.meshes[0].primitives[0].attributes.count("COLOR_0"));
+}
+
+TEST_CASE("bake of a mesh file is refused with a clear error") {
+  const auto dir = vlit::test::temp_dir("cli-obj");
+  const auto obj = dir / "quad.obj";
+  std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
+  const auto r = run_command(kVlit + " bake " + q(obj.string()) + " -o " + q((dir / "out.glb").string()));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("needs a .gltf or .glb input") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(dir / "out.glb"));
+}

@@ -79,7 +79,9 @@ TEST_CASE("one triangle under a point light: COLOR_0 = I cos / d^2 per vertex") 
 TEST_CASE("light above 1 is clipped in unorm formats and counted; float keeps it") {
   GltfBuilder b;
   b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}));
-  const Baked unorm = bake_and_reload(b, {point_light({0, 0, 1}, 10)}, "clip8", ".glb", BakeOptions{"COLOR_0", ColorFormat::kUnorm8});
+  BakeOptions u8;
+  u8.format = ColorFormat::kUnorm8;
+  const Baked unorm = bake_and_reload(b, {point_light({0, 0, 1}, 10)}, "clip8", ".glb", u8);
   CHECK(unorm.report.clipped_vertices == 3);
   BakeOptions f;
   f.format = ColorFormat::kFloat;
@@ -124,4 +126,24 @@ TEST_CASE("everything but the baked attribute passes through") {
   // The original POSITION accessor is unchanged.
   const auto pos = read_accessor_as_doubles(baked.model, baked.model.meshes[0].primitives[0].attributes.at("POSITION"), "out");
   CHECK(pos == std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0});
+}
+
+TEST_CASE("multiply mode: existing vertex colours times the light, alpha kept") {
+  GltfBuilder b;
+  const int mesh = b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2});
+  b.model().meshes[mesh].primitives[0].attributes["COLOR_0"] =
+      b.add_floats({0.5f, 1, 0.25f, 0.75f, 1, 1, 1, 1, 1, 1, 1, 1}, TINYGLTF_TYPE_VEC4);
+  b.add_node(mesh);
+  BakeOptions multiply;
+  multiply.mode = BakeMode::kMultiply;
+  multiply.format = ColorFormat::kFloat;
+  // Light 1 above vertex 0 with intensity 1: vertex 0 gets exactly 1.
+  const Baked baked = bake_and_reload(b, {point_light({0, 0, 1}, 1)}, "multiply", ".glb", multiply);
+  CHECK(baked.report.replaced_attributes == 1);
+  const auto& prim = baked.model.meshes[0].primitives[0];
+  const auto c = read_accessor_as_doubles(baked.model, prim.attributes.at("COLOR_0"), "out");
+  CHECK(c[0] == doctest::Approx(0.5));
+  CHECK(c[1] == doctest::Approx(1.0));
+  CHECK(c[2] == doctest::Approx(0.25));
+  CHECK(c[3] == doctest::Approx(0.75));
 }

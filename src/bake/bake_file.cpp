@@ -1,0 +1,48 @@
+#include "bake/bake_file.h"
+
+#include <filesystem>
+
+#include "bake/light_vertices.h"
+#include "core/input_error.h"
+#include "gltf/gltf_writer.h"
+#include "scene/load_scene.h"
+
+namespace vlit {
+namespace {
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (std::filesystem::equivalent(a, b, ec)) return true;
+  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+}
+
+}  // namespace
+
+BakeFileResult bake_file(const std::string& input, const std::string& output, const BakeFileOptions& options) {
+  if (same_file(input, output)) throw InputError(output, "refusing to overwrite the input; choose another output path");
+  LoadedScene loaded = load_scene(input, options.lights_path, options.use_file_lights);
+  if (!loaded.gltf) throw InputError(input, "bake writes vertex colors into glTF and needs a .gltf or .glb input");
+  BakeFileResult result;
+  result.warnings = std::move(loaded.warnings);
+  result.lights = loaded.scene.lights.size();
+  if (loaded.scene.lights.empty())
+    result.warnings.push_back(input + ": no lights (pass --lights LIGHTS.json); the bake is black");
+
+  LightingRequest request;
+  request.shade.with_specular = false;  // a bake stores the view-independent diffuse light
+  request.progress = options.progress;
+  request.cancel = options.cancel;
+  const auto light = light_scene_vertices(loaded.scene, request);
+  if (options.cancel && options.cancel->load()) throw InputError(input, "interrupted; no output written");
+
+  tinygltf::Model model = std::move(loaded.gltf->model);
+  result.report = bake_vertex_colors(model, loaded.scene, light, options.encode);
+  if (result.report.replaced_attributes > 0)
+    result.warnings.push_back(input + ": " + (options.encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") +
+                              " the existing " + options.encode.target + " of " +
+                              std::to_string(result.report.replaced_attributes) + " primitive(s)");
+  write_gltf(std::move(model), input, output);
+  return result;
+}
+
+}  // namespace vlit

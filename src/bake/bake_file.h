@@ -1,0 +1,34 @@
+// One complete bake: read an asset and its lights, light every vertex, store the light as vertex
+// colours, write the result atomically. The command line runs this once per input file.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "bake/vertex_color_bake.h"
+
+namespace vlit {
+
+struct BakeFileOptions {
+  std::string lights_path;        // LIGHTS.json, may be empty
+  bool use_file_lights = true;    // keep the asset's KHR_lights_punctual lights
+  BakeOptions encode;             // target attribute, format, exposure, unlit
+  // Polled between chunks of vertices; when it becomes true the bake stops with an error and
+  // writes nothing. May be null.
+  const std::atomic<bool>* cancel = nullptr;
+  std::function<void(std::size_t, std::size_t)> progress;  // (vertices done, total), may be empty
+};
+
+struct BakeFileResult {
+  BakeReport report;
+  std::vector<std::string> warnings;  // one line each, prefixed with the file name
+  std::size_t lights = 0;
+};
+
+// Throws InputError naming the file for any problem; on failure no output file exists (an
+// existing one is left as it was).
+BakeFileResult bake_file(const std::string& input, const std::string& output, const BakeFileOptions& options);
+
+}  // namespace vlit

@@ -1,0 +1,64 @@
+// Linear (tube) light: the entry point the bake loop and the CLI's `probe` call.
+//
+// What it computes: the diffuse Id = ∫_0^1 max(0, L.N)/|L|^(n+1) dt and the specular (peak,
+// neighbourhood or exact, SpecularOptions::method) of a segment light of unit intensity per unit
+// t, with kd = ks = 1 (conventions.h; MISSION.md "Linear light"; Picott 1992 eq. 3-8).
+//
+// Dispatch: integer falloff n in {0,1,2,3} uses the closed forms (linear_diffuse_closed.h) unless
+// LinearDiffuseOptions::force_quadrature; any other n in [0, 3] uses linear_diffuse_quadrature.h.
+// Specular: kNone -> 0, kPeak -> linear_specular_peak.h, kNeighborhood ->
+// linear_specular_neighborhood.h, kExact -> linear_specular_exact.h. The frame
+// (linear_geometry.h) is built once per call and shared.
+//
+// Per-light constants: only Ld = Q1 - Q0, |Ld| and u = Ld/|Ld| (docs/linear-lights.md, E1);
+// they are recomputed here because they cost a subtraction and one sqrt.
+// Errata, stable reformulations, stiff cases, and measured accuracy: docs/linear-lights.md;
+// reproduce with ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+// Outputs are finite and >= 0 for every finite input (the diffuse saturates at the largest finite
+// T when the true value overflows T).
+#pragma once
+
+#include "conventions.h"
+#include "linear_diffuse_closed.h"
+#include "linear_diffuse_quadrature.h"
+#include "linear_geometry.h"
+#include "linear_specular_exact.h"
+#include "linear_specular_neighborhood.h"
+#include "linear_specular_peak.h"
+
+namespace vlit {
+
+struct LinearDiffuseOptions {
+  double quadrature_tolerance = 1e-10;  // relative tolerance of the non-integer-n quadrature
+  bool force_quadrature = false;        // use the quadrature also for n = 0, 1, 2, 3
+};
+
+// Response for unit intensity (Ip per unit of the parameter t in [0,1]) and kd = ks = 1.
+template <class T>
+Response<T> shade_linear(const LinearLight<T>& light, const ShadingPoint<T>& sp, const SpecularOptions& spec,
+                         const LinearDiffuseOptions& diff = {}) {
+  using A = LinearCompute<T>;
+  const LinearFrame<A> fr = make_linear_frame(light, sp);
+  Response<T> r;
+  if (fr.empty) return r;
+  const double n = double(light.falloff);
+  const bool integer_n = (n == 0 || n == 1 || n == 2 || n == 3);
+  const double d = (integer_n && !diff.force_quadrature)
+                       ? double(linear_diffuse_closed_normalised(fr, int(n)))
+                       : double(linear_diffuse_quadrature_normalised(fr, A(n), A(diff.quadrature_tolerance)));
+  r.diffuse = linear_saturate<T>(d * linear_scale_factor(fr.scale, n));
+  const A m = A(sp.shininess);
+  switch (spec.method) {
+    case SpecularMethod::kNone: break;
+    case SpecularMethod::kPeak: r.specular = T(linear_specular_peak_frame(fr, m)); break;
+    case SpecularMethod::kNeighborhood:
+      r.specular = T(linear_specular_neighborhood_frame(fr, m, spec.neighborhood_samples));
+      break;
+    case SpecularMethod::kExact:
+      r.specular = T(linear_specular_exact_frame(fr, m, A(spec.exact_tolerance)));
+      break;
+  }
+  return r;
+}
+
+}  // namespace vlit

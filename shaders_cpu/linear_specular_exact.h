@@ -1,0 +1,75 @@
+// Linear light, specular term, the Phong lobe integrated over the visible segment.
+//
+// What it computes: Is(exact) = ∫_0^1 [L(t).N > 0] max(0, Rv.L̂(t))^m dt for unit intensity
+// (MISSION.md "Linear light"), to the relative tolerance SpecularOptions::exact_tolerance.
+//
+// Sources: Picott 1992 eq. 6 integrated along eq. 3 (the paper rejects this integral as too slow
+// and uses the peak, eq. 7-8; we keep it as the reference-quality method). Integrated in the
+// local frame of linear_geometry.h: cos α(s) = (ar + br s)/sqrt(h^2 + s^2), dt = ds/|Ld|, over the
+// horizon-clipped interval [sa, sb], with linear_gauss_legendre.h.
+// Panels: edges at the foot (direction changes on the scale h there) with a geometric grading of
+// ratio 2 from width h, at the peak s_peak (linear_specular_peak.h) with a grading from the lobe
+// width w = (h^2 + s_peak^2) / (h sqrt(m)) (the s-length over which α changes by 1/sqrt(m)) down
+// to w/2^6 and up, and at the zero of Rv.L (s = -ar/br), where max(0, .)^m has a kink.
+// Departures from the paper: it is not in the paper; horizon clipping.
+// Stiff cases: zero-length (point value, exact), P on the segment (L̂ = ±u on the visible part),
+// large m (lobe panels); tests/kernels/linear/linear_stiff_test.cpp.
+// Measured accuracy: docs/linear-lights.md,
+//   ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+#include "core/robust_math.h"
+#include "linear_gauss_legendre.h"
+#include "linear_geometry.h"
+#include "linear_specular_peak.h"
+
+namespace vlit {
+
+template <class A>
+A linear_specular_exact_frame(const LinearFrame<A>& fr, A m, A rel_tol) {
+  if (fr.empty) return A(0);
+  if (fr.zero_length) return fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, m) : A(0);
+  if (fr.on_segment) return phong_power(linear_cos_rv(fr, fr.sb), m) * fr.delta / fr.ell;
+  // Integration variable tau = s - sa in [0, delta] (accurate panel lengths for far lights).
+  const A sa = fr.sa;
+  auto integrand = [&fr, m, sa](A tau) { return phong_power(linear_cos_rv(fr, sa + tau), m); };
+  constexpr int kCapacity = 160;
+  A edges[kCapacity];
+  int count = 0;
+  edges[count++] = A(0);
+  edges[count++] = fr.delta;
+  const A foot = -sa;
+  if (foot > A(0) && foot < fr.delta) edges[count++] = foot;
+  const A w_foot = std::fmax(fr.h, std::fmax(std::fabs(fr.sa), std::fabs(fr.sb)) * A(1e-30));
+  count = append_geometric_grading(edges, count, kCapacity, A(0), fr.delta, foot, w_foot, 100);
+  const A s_peak = linear_specular_peak_position(fr);
+  const A tau_peak = s_peak - sa;
+  if (tau_peak > A(0) && tau_peak < fr.delta) edges[count++] = tau_peak;
+  if (fr.h > A(0) && m > A(1)) {
+    const A w_lobe = (fr.h * fr.h + s_peak * s_peak) / (fr.h * std::sqrt(m)) / A(64);
+    if (std::isfinite(w_lobe))
+      count = append_geometric_grading(edges, count, kCapacity, A(0), fr.delta, tau_peak, w_lobe, 40);
+  }
+  if (fr.br != A(0)) {
+    const A tau_zero = -fr.ar / fr.br - sa;
+    if (tau_zero > A(0) && tau_zero < fr.delta && count < kCapacity) edges[count++] = tau_zero;
+  }
+  sort_edges(edges, count);
+  const A tol = std::fmax(rel_tol, A(8) * std::numeric_limits<A>::epsilon());
+  // Absolute floor: the tolerance relative to the peak value times the visible length, so that a
+  // lobe that misses the segment (integral ~0) does not force endless bisection.
+  const A floor = tol * A(1e-6) * phong_power(linear_cos_rv(fr, s_peak), m) * fr.delta;
+  const A v = adaptive_gauss_legendre(integrand, edges, count, tol, floor);
+  return std::fmax(v, A(0)) / fr.ell;
+}
+
+template <class T>
+T linear_specular_exact(const LinearLight<T>& light, const ShadingPoint<T>& sp, double rel_tol) {
+  using A = LinearCompute<T>;
+  return T(linear_specular_exact_frame(make_linear_frame(light, sp), A(sp.shininess), A(rel_tol)));
+}
+
+}  // namespace vlit

@@ -34,7 +34,7 @@
 //   integral diverges; we return 0, as shade_point does for a light at P. For n < 1 it converges
 //   and we return its value b ∫ |s|^-n ds over the visible half.
 // Measured accuracy: docs/linear-lights.md, table produced by
-//   ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+//   ./build/linear/tests/linear_light_tests -tc="accuracy table" -s
 #pragma once
 
 #include <cmath>

@@ -17,7 +17,7 @@
 // Stiff cases: the same named cases as linear_diffuse_closed.h, run with force_quadrature and
 // with non-integer n (tests/kernels/linear/linear_stiff_test.cpp).
 // Measured accuracy: docs/linear-lights.md,
-//   ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+//   ./build/linear/tests/linear_light_tests -tc="accuracy table" -s
 #pragma once
 
 #include <cmath>

@@ -13,7 +13,7 @@
 // Per-light constants: only Ld = Q1 - Q0, |Ld| and u = Ld/|Ld| (docs/linear-lights.md, E1);
 // they are recomputed here because they cost a subtraction and one sqrt.
 // Errata, stable reformulations, stiff cases, and measured accuracy: docs/linear-lights.md;
-// reproduce with ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+// reproduce with ./build/linear/tests/linear_light_tests -tc="accuracy table" -s
 // Outputs are finite and >= 0 for every finite input (the diffuse saturates at the largest finite
 // T when the true value overflows T).
 #pragma once

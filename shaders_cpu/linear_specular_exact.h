@@ -15,7 +15,7 @@
 // Stiff cases: zero-length (point value, exact), P on the segment (L̂ = ±u on the visible part),
 // large m (lobe panels); tests/kernels/linear/linear_stiff_test.cpp.
 // Measured accuracy: docs/linear-lights.md,
-//   ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+//   ./build/linear/tests/linear_light_tests -tc="accuracy table" -s
 #pragma once
 
 #include <cmath>

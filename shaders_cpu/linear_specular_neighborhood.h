@@ -19,7 +19,7 @@
 // peak; K < 1 returns the peak; zero-length returns the point value.
 // Accuracy: an approximation, not a quadrature; its error against the exact lobe integral is
 // reported (not bounded) in docs/linear-lights.md,
-//   ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+//   ./build/linear/tests/linear_light_tests -tc="accuracy table" -s
 #pragma once
 
 #include <cmath>

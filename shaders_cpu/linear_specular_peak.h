@@ -20,7 +20,7 @@
 // division by h), h = 0 with ar = 0 (s* = 0/0 avoided by the ar > 0 test); see
 // tests/kernels/linear/linear_stiff_test.cpp.
 // Measured accuracy (peak vs dense search + golden refinement in long double): see
-// docs/linear-lights.md, ./build/linear/tests/linear_light_tests -ts="accuracy table" -s
+// docs/linear-lights.md, ./build/linear/tests/linear_light_tests -tc="accuracy table" -s
 #pragma once
 
 #include <cmath>

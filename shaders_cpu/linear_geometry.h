@@ -58,8 +58,15 @@ using LinearSetup = std::conditional_t<(sizeof(T) < sizeof(double)), double, T>;
 // (eps 6e-8) the Phong power multiplies the rounding error of cos α by m (m = 1000 gives ~6e-5,
 // above the 1e-5 float bar) and 1/h^(n+1) overflows float for P within ~1e-13 of the line
 // (docs/linear-lights.md, "Float"). The cost is scalar double arithmetic in the kernels.
+// Build switch VLIT_LINEAR_FLOAT_NATIVE (for the measurement in docs/linear-lights.md only): the
+// float instantiation computes in float after the double setup.
+#ifdef VLIT_LINEAR_FLOAT_NATIVE
+template <class T>
+using LinearCompute = T;
+#else
 template <class T>
 using LinearCompute = LinearSetup<T>;
+#endif
 
 // Everything a linear kernel needs about one (light, point) pair, in normalised lengths.
 template <class A>

@@ -1,6 +1,7 @@
 #include "gltf/gltf_file.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 
 #include "core/input_error.h"
@@ -13,6 +14,45 @@ namespace {
 bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
                           const unsigned char*, int, void*) {
   return true;
+}
+
+// File access for external buffers and images. tinygltf's reader trusts tellg(), so a URI that
+// names a directory turns into an allocation of 2^63 bytes (found by the malformed corpus:
+// tinygltf/tests/issue-416.gltf). Ours: only regular files are read, sizes are bounded, nothing
+// is ever written, and paths are used literally (tinygltf 2.7 no longer runs wordexp(3) on URIs,
+// as older releases did; we do not rely on the library version for that).
+constexpr std::uint64_t kMaxExternalFileBytes = std::uint64_t(1) << 31;
+
+bool regular_file_exists(const std::string& path, void*) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(path, ec);
+}
+
+std::string literal_path(const std::string& path, void*) { return path; }
+
+bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    if (err) *err += "not a regular file: " + path + "\n";
+    return false;
+  }
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxExternalFileBytes) {
+    if (err) *err += "file too large or unreadable: " + path + "\n";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  out->resize(static_cast<std::size_t>(size));
+  if (size > 0 && !in.read(reinterpret_cast<char*>(out->data()), static_cast<std::streamsize>(size))) {
+    if (err) *err += "read error: " + path + "\n";
+    return false;
+  }
+  return true;
+}
+
+bool refuse_write(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
+  if (err) *err += "vlit does not write through the glTF loader: " + path + "\n";
+  return false;
 }
 
 // Extensions that change where or how vertex data is stored. An asset that requires one of
@@ -44,6 +84,7 @@ GltfFile load_gltf_file(const std::string& path) {
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keep_image_undecoded, nullptr);
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&regular_file_exists, &literal_path, &read_regular_file, &refuse_write, nullptr});
   loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
   std::string err, warn;
   const std::string base_dir = [&] {
@@ -65,7 +106,11 @@ GltfFile load_gltf_file(const std::string& path) {
     while (!message.empty() && (message.back() == '\r' || message.back() == ' ')) message.pop_back();
     throw InputError(path, "not a valid glTF 2.0 file: " + message);
   }
-  if (!warn.empty()) file.warnings.push_back(warn.substr(0, warn.find('\n')));
+  if (!warn.empty()) {
+    std::string first = warn.substr(0, warn.find('\n'));
+    while (!first.empty() && (first.back() == '\r' || first.back() == ' ')) first.pop_back();
+    file.warnings.push_back(path + ": " + first);
+  }
 
   for (const std::string& ext : file.model.extensionsRequired)
     for (const char* undecodable : kUndecodableExtensions)

@@ -2,6 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
@@ -182,4 +183,19 @@ TEST_CASE("KHR_lights_punctual lights are placed by their node's transform") {
   check_vec(l.direction, {0, 0, 1});
   CHECK(l.cos_inner == doctest::Approx(std::cos(0.1)));
   CHECK(l.cos_outer == doctest::Approx(std::cos(0.3)));
+}
+
+TEST_CASE("external URIs are used literally: no shell expansion, no reading directories") {
+  const auto dir = vlit::test::temp_dir("uri");
+  const auto marker = dir / "expanded";
+  // If the loader ran the URI through shell expansion, this would create the marker file.
+  const std::string uri = "$(touch " + marker.string() + ").bin";
+  std::ofstream(dir / "shell.gltf") << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": ")" + uri +
+                                           R"(", "byteLength": 4}]})";
+  CHECK_THROWS_AS(load_gltf_file((dir / "shell.gltf").string()), InputError);
+  CHECK_FALSE(std::filesystem::exists(marker));
+  // A buffer URI naming a directory is refused, not read as a file of absurd size.
+  std::filesystem::create_directories(dir / "folder");
+  std::ofstream(dir / "dir.gltf") << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "folder", "byteLength": 4}]})";
+  CHECK_THROWS_WITH_AS(load_gltf_file((dir / "dir.gltf").string()), doctest::Contains("dir.gltf"), InputError);
 }

@@ -16,9 +16,9 @@ bool keep_image_undecoded(tinygltf::Image*, const int, std::string*, std::string
   return true;
 }
 
-// File access for external buffers and images. tinygltf's reader trusts tellg(), so a URI that
-// names a directory turns into an allocation of 2^63 bytes (found by the malformed corpus:
-// tinygltf/tests/issue-416.gltf). Ours: only regular files are read, sizes are bounded, nothing
+// File access for external buffers and images. tinygltf's reader trusts tellg(), so a path that
+// is not a regular file (e.g. a directory) turns into an allocation of 2^63 bytes (found under
+// AddressSanitizer with the malformed corpus: tinygltf/tests/issue-416.gltf). Ours: only regular files are read, sizes are bounded, nothing
 // is ever written, and paths are used literally (tinygltf 2.7 no longer runs wordexp(3) on URIs,
 // as older releases did; we do not rely on the library version for that).
 constexpr std::uint64_t kMaxExternalFileBytes = std::uint64_t(1) << 31;

@@ -11,6 +11,7 @@
 
 #include "conventions.h"
 #include "directional_light.h"
+#include "linear_light.h"
 #include "point_light.h"
 #include "scene/light_source.h"
 #include "spot_light.h"
@@ -20,11 +21,12 @@ namespace vlit {
 struct ShadeOptions {
   bool with_specular = true;
   SpecularOptions specular;
+  LinearDiffuseOptions linear;
 };
 
 template <class T>
 struct PreparedLight {
-  using Kernel = std::variant<PointLight<T>, DirectionalLight<T>, SpotLight<T>>;
+  using Kernel = std::variant<PointLight<T>, DirectionalLight<T>, SpotLight<T>, LinearLight<T>>;
   LightType type = LightType::kPoint;
   Vec3<T> radiance{1, 1, 1};  // colour x intensity
   Kernel kernel;
@@ -63,6 +65,9 @@ PreparedLight<T> prepare_light(const LightSource& light) {
       out.kernel = SpotLight<T>{v(light.position), v(light.direction), T(light.cos_inner), T(light.cos_outer),
                                 T(light.falloff)};
       break;
+    case LightType::kLinear:
+      out.kernel = LinearLight<T>{v(light.from), v(light.to), T(light.falloff)};
+      break;
     default:
       throw std::invalid_argument(std::string("light model not available yet: ") + light_type_name(light.type));
   }
@@ -80,7 +85,12 @@ Response<T> shade(const PreparedLight<T>& light, const ShadingPoint<T>& sp, cons
         using K = std::decay_t<decltype(k)>;
         if constexpr (std::is_same_v<K, PointLight<T>>) return shade_point(k, sp, spec);
         else if constexpr (std::is_same_v<K, DirectionalLight<T>>) return shade_directional(k, sp, spec);
-        else return shade_spot(k, sp, spec);
+        else if constexpr (std::is_same_v<K, SpotLight<T>>) return shade_spot(k, sp, spec);
+        else {
+          SpecularOptions s = options.specular;
+          if (!spec) s.method = SpecularMethod::kNone;
+          return shade_linear(k, sp, s, options.linear);
+        }
       },
       light.kernel);
   r.diffuse *= window;

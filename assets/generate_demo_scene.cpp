@@ -183,6 +183,7 @@ int main(int argc, char** argv) {
   camera.type = "perspective";
   camera.perspective.yfov = 0.75;
   camera.perspective.znear = 0.05;
+  camera.perspective.zfar = 100;  // tinygltf writes zfar even when unset, and 0 is invalid
   model.cameras.push_back(camera);
   tinygltf::Node cam;
   cam.name = "camera";

@@ -1,7 +1,10 @@
 #include "gltf/gltf_writer.h"
 
 #include <filesystem>
+#include <cstring>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
@@ -59,6 +62,49 @@ void merge_buffers(tinygltf::Model& model) {
   model.buffers.assign(1, std::move(merged));
 }
 
+// Repairs what tinygltf 2.7 serializes wrongly: it always writes a perspective camera's "zfar",
+// even 0 for an infinite projection, which the glTF spec forbids (zfar must be > 0 when present).
+void repair_serialized_json(nlohmann::json& root) {
+  if (!root.contains("cameras") || !root["cameras"].is_array()) return;
+  for (auto& camera : root["cameras"]) {
+    if (!camera.contains("perspective")) continue;
+    auto& p = camera["perspective"];
+    if (p.contains("zfar") && p["zfar"].is_number() && !(p["zfar"].get<double>() > 0)) p.erase("zfar");
+  }
+}
+
+std::uint32_t read_u32(const std::string& s, std::size_t at) {
+  std::uint32_t v = 0;
+  std::memcpy(&v, s.data() + at, 4);
+  return v;
+}
+void append_u32(std::string& s, std::uint32_t v) { s.append(reinterpret_cast<const char*>(&v), 4); }
+
+// Applies repair_serialized_json to a .gltf text or to the JSON chunk of a .glb, keeping the
+// binary chunk as it is.
+std::string repaired(const std::string& bytes, bool binary) {
+  if (!binary) {
+    nlohmann::json root = nlohmann::json::parse(bytes);
+    repair_serialized_json(root);
+    return root.dump(2);
+  }
+  // GLB: 12-byte header, then chunks of (length, type, data) with 4-byte aligned lengths.
+  const std::uint32_t json_length = read_u32(bytes, 12);
+  nlohmann::json root = nlohmann::json::parse(bytes.substr(20, json_length));
+  repair_serialized_json(root);
+  std::string json = root.dump();
+  while (json.size() % 4 != 0) json.push_back(' ');
+  const std::string rest = bytes.substr(20 + json_length);
+  std::string out = bytes.substr(0, 12);
+  append_u32(out, static_cast<std::uint32_t>(json.size()));
+  append_u32(out, 0x4E4F534Au);  // "JSON"
+  out += json;
+  out += rest;
+  const std::uint32_t total = static_cast<std::uint32_t>(out.size());
+  std::memcpy(out.data() + 8, &total, 4);
+  return out;
+}
+
 }  // namespace
 
 void write_gltf(tinygltf::Model model, const std::string& input_path, const std::string& output_path) {
@@ -90,7 +136,7 @@ void write_gltf(tinygltf::Model model, const std::string& input_path, const std:
   std::ostringstream stream;
   if (!writer.WriteGltfSceneToStream(&model, stream, /*prettyPrint=*/!binary, binary))
     throw InputError(output_path, "tinygltf could not serialize the model");
-  write_file_atomically(output_path, stream.str());
+  write_file_atomically(output_path, repaired(stream.str(), binary));
 }
 
 }  // namespace vlit

@@ -10,6 +10,7 @@
 #include "gltf/gltf_scene.h"
 #include "gltf/gltf_writer.h"
 #include "support/gltf_builder.h"
+#include "support/run_command.h"
 
 using namespace vlit;
 using vlit::test::GltfBuilder;
@@ -146,4 +147,28 @@ TEST_CASE("multiply mode: existing vertex colours times the light, alpha kept") 
   CHECK(c[1] == doctest::Approx(1.0));
   CHECK(c[2] == doctest::Approx(0.25));
   CHECK(c[3] == doctest::Approx(0.75));
+}
+
+TEST_CASE("an infinite perspective camera stays infinite: no zfar = 0 in the output") {
+  for (const std::string ext : {".glb", ".gltf"}) {
+    CAPTURE(ext);
+    GltfBuilder b;
+    b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {}, {0, 1, 2}));
+    tinygltf::Camera camera;
+    camera.type = "perspective";
+    camera.perspective.yfov = 0.5;
+    camera.perspective.znear = 0.1;  // zfar left at 0: infinite
+    b.model().cameras.push_back(camera);
+    b.model().nodes[0].camera = 0;
+    const auto dir = vlit::test::temp_dir("infinite-camera");
+    const std::string in = b.write((dir / "in.glb").string());
+    GltfFile file = load_gltf_file(in);
+    const std::string out = (dir / ("out" + ext)).string();
+    write_gltf(file.model, in, out);
+    const std::string text = vlit::test::read_all(out);
+    CHECK(text.find("\"zfar\"") == std::string::npos);
+    const GltfFile back = load_gltf_file(out);
+    REQUIRE(back.model.cameras.size() == 1);
+    CHECK(back.model.cameras[0].perspective.yfov == doctest::Approx(0.5));
+  }
 }

@@ -269,6 +269,7 @@ class GltfSceneWriter {
     c.perspective.yfov = yfov;
     c.perspective.aspectRatio = aspect;
     c.perspective.znear = 0.05;
+    c.perspective.zfar = 50;  // finite: tinygltf would otherwise write the invalid zfar = 0
     model_.cameras.push_back(c);
     const Vec3d back = normalize(eye - target);
     const Vec3d right = normalize(cross(Vec3d{0, 1, 0}, back));
@@ -363,6 +364,13 @@ class GltfSceneWriter {
 // ---------------------------------------------------------------------------------------------
 // LIGHTS.json output (docs/lights-json.md), written by hand so the bytes are stable.
 
+// Distance falloff n of the spots and tubes: 1, the "linear decay" of the renderers of the
+// paper's time, not the physical 2. The paper's specular (eq. 6, and its linear and area forms)
+// has no distance falloff, so with n = 2 the intensity needed to light a floor 3 m away makes the
+// specular of even matte surfaces (ks = 0.04) as bright as their diffuse and washes the walls
+// out; with n = 1 it stays a tenth of it. docs/paper-scenes.md.
+constexpr int kFalloff = 1;
+
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4g", std::abs(v) < 5e-5 ? 0.0 : v);
@@ -377,12 +385,13 @@ class LightsJson {
             std::array<double, 3> color) {
     add("{\"name\": \"" + name + "\", \"type\": \"spot\", \"position\": " + vec(position) +
         ", \"direction\": " + vec(normalize(target - position)) + ",\n   \"inner_cone_angle\": " + num(inner) +
-        ", \"outer_cone_angle\": " + num(outer) + ", \"intensity\": " + num(intensity) + ", \"falloff\": 2, \"color\": " +
-        rgb(color) + "}");
+        ", \"outer_cone_angle\": " + num(outer) + ", \"intensity\": " + num(intensity) + ", \"falloff\": " + std::to_string(kFalloff) +
+        ", \"color\": " + rgb(color) + "}");
   }
   void linear(const std::string& name, Vec3d from, Vec3d to, double intensity, std::array<double, 3> color) {
     add("{\"name\": \"" + name + "\", \"type\": \"linear\", \"from\": " + vec(from) + ", \"to\": " + vec(to) +
-        ",\n   \"intensity\": " + num(intensity) + ", \"falloff\": 2, \"color\": " + rgb(color) + "}");
+        ",\n   \"intensity\": " + num(intensity) + ", \"falloff\": " + std::to_string(kFalloff) +
+        ", \"color\": " + rgb(color) + "}");
   }
   // A rectangle centred at c with edge vectors u and v; it emits towards cross(u, v), so its
   // corners c -/+ u/2 -/+ v/2 are listed counter-clockwise seen from that side.
@@ -498,9 +507,9 @@ void write_bowling_lights(const std::string& dir) {
   // Figure 3: spotlights above the pins and the ball, hard cones (a narrow penumbra), so the
   // cutoff of each cone shows on the lane.
   LightsJson spot;
-  spot.spot("pins", {0, 3.2, 0.6}, {0, 0, -0.45}, 0.30, 0.34, 11, kWarmWhite);
-  spot.spot("ball", {0.6, 3.0, 3.4}, {0.1, 0, 2.2}, 0.22, 0.26, 9, kWarmWhite);
-  spot.spot("lane", {-0.4, 3.0, 4.6}, {0, 0, 3.9}, 0.30, 0.34, 7, kWarmWhite);
+  spot.spot("pins", {0, 3.2, 0.6}, {0, 0, -0.45}, 0.30, 0.34, 3.6, kWarmWhite);
+  spot.spot("ball", {0.6, 3.0, 3.4}, {0.1, 0, 2.2}, 0.22, 0.26, 3.2, kWarmWhite);
+  spot.spot("lane", {-0.4, 3.0, 4.6}, {0, 0, 3.9}, 0.30, 0.34, 2.6, kWarmWhite);
   spot.write(dir + "/bowling-spot.json");
   // Figure 4: fluorescent tubes across the lane under a low ceiling, one over the pin deck.
   LightsJson linear;
@@ -508,14 +517,15 @@ void write_bowling_lights(const std::string& dir) {
   const double tube_z[4] = {-0.3, 1.3, 2.9, 4.5};
   for (int k = 0; k < 4; ++k)
     linear.linear("tube " + std::to_string(k + 1), {-tube_half, tube_y, tube_z[k]}, {tube_half, tube_y, tube_z[k]},
-                  k == 0 ? 9 : 7, kCoolWhite);
+                  k == 0 ? 2.0 : 1.5, kCoolWhite);
   linear.write(dir + "/bowling-linear.json");
-  // Figure 7: ceiling panels directly overhead, emitting downwards (edge vectors u = +X, v = +Z:
-  // cross(u, v) = -Y).
+  // Figure 7: 1.6 m square ceiling panels directly overhead, emitting downwards (edge vectors
+  // u = +X, v = +Z: cross(u, v) = -Y). Large and low, so that a small intensity lights the lane:
+  // the paper's area specular (eq. 11-12) does not shrink with the light's solid angle.
   LightsJson area;
   const double panel_z[3] = {-0.2, 1.8, 3.8};
   for (int k = 0; k < 3; ++k)
-    area.panel("panel " + std::to_string(k + 1), {0, 2.8, panel_z[k]}, {1.2, 0, 0}, {0, 0, 0.9}, 16, kCoolWhite);
+    area.panel("panel " + std::to_string(k + 1), {0, 2.6, panel_z[k]}, {1.6, 0, 0}, {0, 0, 1.6}, 3.2, kCoolWhite);
   area.write(dir + "/bowling-area.json");
 }
 
@@ -528,7 +538,7 @@ constexpr double kRoomHalfWidth = 3.0, kRoomBack = -3.0, kRoomFront = 2.0, kRoom
 bool write_studio(const std::string& dir) {
   GltfSceneWriter w("vlit generate_paper_scenes (Picott 1992 fig. 9)");
   const int floor_m = w.material({"floor", {0.55, 0.5, 0.45}, 0.5, 0});
-  const int wall_m = w.material({"walls", {0.78, 0.78, 0.75}, 0.9, 0});
+  const int wall_m = w.material({"walls", {0.6, 0.6, 0.58}, 0.9, 0});
   const int wood = w.material({"table", {0.45, 0.26, 0.13}, 0.4, 0});
   const int vase_m = w.material({"vase", {0.1, 0.45, 0.5}, 0.15, 0});
   const int sphere_m = w.material({"sphere", {0.8, 0.2, 0.15}, 0.25, 0});
@@ -581,21 +591,21 @@ bool write_studio(const std::string& dir) {
 void write_studio_lights(const std::string& dir) {
   // 9a: three spots from the ceiling corners onto the table, the sphere and the boxes.
   LightsJson spot;
-  spot.spot("key", {1.8, 2.9, 1.8}, {-0.4, 0.75, -0.8}, 0.35, 0.45, 9, kWarmWhite);
-  spot.spot("sphere", {-1.6, 2.9, 1.6}, {1.0, 0.3, 0.4}, 0.3, 0.4, 8, kWarmWhite);
-  spot.spot("boxes", {0.2, 2.9, -0.6}, {1.8, 0.8, -1.8}, 0.35, 0.45, 6, kCoolWhite);
+  spot.spot("key", {1.8, 2.9, 1.8}, {-0.4, 0.75, -0.8}, 0.35, 0.45, 3.2, kWarmWhite);
+  spot.spot("sphere", {-1.6, 2.9, 1.6}, {1.0, 0.3, 0.4}, 0.3, 0.4, 3.0, kWarmWhite);
+  spot.spot("boxes", {0.2, 2.9, -0.6}, {1.8, 0.8, -1.8}, 0.35, 0.45, 2.4, kCoolWhite);
   spot.write(dir + "/studio-spot.json");
   // 9b: two long tubes under the ceiling, front to back, and one upright tube by the left wall.
   LightsJson linear;
-  linear.linear("ceiling left", {-1.2, 2.9, 1.5}, {-1.2, 2.9, -2.5}, 10, kCoolWhite);
-  linear.linear("ceiling right", {1.2, 2.9, 1.5}, {1.2, 2.9, -2.5}, 10, kCoolWhite);
-  linear.linear("upright", {-2.7, 0.3, 0.5}, {-2.7, 2.4, 0.5}, 4, kWarmWhite);
+  linear.linear("ceiling left", {-1.2, 2.9, 1.5}, {-1.2, 2.9, -2.5}, 1.4, kCoolWhite);
+  linear.linear("ceiling right", {1.2, 2.9, 1.5}, {1.2, 2.9, -2.5}, 1.4, kCoolWhite);
+  linear.linear("upright", {-2.7, 0.3, 0.5}, {-2.7, 2.4, 0.5}, 0.6, kWarmWhite);
   linear.write(dir + "/studio-linear.json");
   // 9c: a large ceiling panel (emitting down) and a softbox facing the set from the left
   // (edge vectors u = -Z, v = +Y: cross(u, v) = +X).
   LightsJson area;
-  area.panel("ceiling", {0, 2.95, -0.5}, {2.0, 0, 0}, {0, 0, 1.6}, 6, kCoolWhite);
-  area.panel("softbox", {-2.6, 1.4, 0.6}, {0, 0, -1.0}, {0, 1.2, 0}, 5, kWarmWhite);
+  area.panel("ceiling", {0, 2.95, -0.5}, {2.4, 0, 0}, {0, 0, 2.0}, 2.0, kCoolWhite);
+  area.panel("softbox", {-2.6, 1.4, 0.6}, {0, 0, -1.0}, {0, 1.2, 0}, 2.0, kWarmWhite);
   area.write(dir + "/studio-area.json");
 }
 

@@ -176,6 +176,11 @@ const Scenes& scenes() {
     }
     return out;
   }();
+  // Removes the directory when the test program exits.
+  static const struct Cleanup {
+    fs::path dir;
+    ~Cleanup() { std::error_code ec; fs::remove_all(dir, ec); }
+  } cleanup{s.dir};
   return s;
 }
 

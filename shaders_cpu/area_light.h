@@ -1,0 +1,67 @@
+// Area (panel) light: entry point. Diffuse by Lambert's contour integral, specular by the paper's
+// peak, its neighbourhood refinement, or the exact lobe integral.
+//
+// Computes, for unit intensity and kd = ks = 1 (conventions.h, MISSION.md "Area light"):
+//   diffuse  = ∫_A max(0, cos theta) cos theta_l / r^2 dA                   area_diffuse_contour.h
+//   specular = max over the visible light of max(0, Rv.w)^m                  area_specular_peak.h
+//            | peak x covered fraction of its neighbourhood                  area_specular_neighborhood.h
+//            | ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA       area_specular_exact.h
+// Sources: Picott 1992 eq. 9-12 and the sidebar; Nishita and Nakamae 1985; see each file.
+// Conventions: conventions.h. The light is one-sided (emits toward the side from which its
+// vertices are counter-clockwise) unless two_sided; a point behind it, or in its plane, gets 0.
+// Departures from the paper: horizon clipping; exact boundary search instead of the sidebar's
+// rule; stable edge terms (docs/area-lights.md).
+// Scalar type: float evaluates in double internally (AreaReal) and rounds once.
+// Limits: ≤ kMaxAreaVertices vertices (prepare_area_light throws otherwise); no heap allocation
+// per evaluation once the light is prepared.
+// Measured accuracy: docs/area-lights.md, `./build/area/tests/area_light_tests`.
+#pragma once
+
+#include "area_diffuse_contour.h"
+#include "area_polygon.h"
+#include "area_specular_exact.h"
+#include "area_specular_neighborhood.h"
+#include "area_specular_peak.h"
+
+namespace vlit {
+
+// Shades with a prepared light (per-light constants computed once): the bake loop's form.
+template <class T>
+Response<T> shade_area(const PreparedAreaLight<T>& light, const ShadingPoint<T>& sp,
+                       const SpecularOptions& spec) {
+  using R = AreaReal<T>;
+  const Vec3<R> p = static_cast<Vec3<R>>(sp.p);
+  const Vec3<R> n = static_cast<Vec3<R>>(sp.n);
+  const AreaView<R> view = make_area_view(light, p);
+  if (!view.lit) return {};
+  ClipPolygon<R> visible;
+  clip_to_horizon(light, view, n, visible);
+  if (visible.count < 3) return {};
+  Response<T> r;
+  r.diffuse = static_cast<T>(area_diffuse_contour(light, view, visible, n));
+  const Vec3<R> rv = static_cast<Vec3<R>>(sp.rv);
+  const R m = static_cast<R>(sp.shininess);
+  switch (spec.method) {
+    case SpecularMethod::kNone:
+      break;
+    case SpecularMethod::kPeak:
+      r.specular = static_cast<T>(area_specular_peak(visible, view, rv, m));
+      break;
+    case SpecularMethod::kNeighborhood:
+      r.specular = static_cast<T>(area_specular_neighborhood(visible, view, rv, m, spec.neighborhood_samples));
+      break;
+    case SpecularMethod::kExact:
+      r.specular = static_cast<T>(area_specular_exact(visible, view, rv, m, static_cast<R>(spec.exact_tolerance)));
+      break;
+  }
+  return r;
+}
+
+// The required convenience form: validates and prepares the light on every call (throws
+// std::invalid_argument for an invalid light). Prefer preparing once for many points.
+template <class T>
+Response<T> shade_area(const AreaLight<T>& light, const ShadingPoint<T>& sp, const SpecularOptions& spec) {
+  return shade_area(prepare_area_light(light), sp, spec);
+}
+
+}  // namespace vlit

@@ -1,0 +1,139 @@
+// Shared helpers of the area-light tests: seeded random configurations and error reporting.
+#pragma once
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "area_light.h"
+#include "area_reference.h"
+
+namespace vlit::test {
+
+// Absolute floor of the accuracy bars where the reference is ~0: kAbsFloor x the magnitude of
+// the unclipped contour terms (contour_scale).
+inline constexpr double kAbsFloor = 1e-12;
+
+// Relative error, and absolute error in units of `scale` (the unclipped magnitude). A value
+// meets bar b if rel <= b or abs_scaled <= kAbsFloor.
+struct ErrorMeasure {
+  double rel = 0, abs_scaled = 0;
+  bool within(double bar) const { return rel <= bar || abs_scaled <= kAbsFloor; }
+  // The error that counts for the bar: rel if it meets it, else the scaled absolute error.
+  double effective(double bar) const { return rel <= bar ? rel : (abs_scaled <= kAbsFloor ? 0.0 : rel); }
+};
+inline ErrorMeasure measure(double value, double ref, double scale) {
+  ErrorMeasure e;
+  const double d = std::abs(value - ref);
+  e.rel = ref != 0 ? d / std::abs(ref) : (d == 0 ? 0 : INFINITY);
+  e.abs_scaled = scale > 0 ? d / scale : (d == 0 ? 0 : INFINITY);
+  return e;
+}
+
+struct Rng {
+  std::mt19937_64 gen;
+  explicit Rng(uint64_t seed) : gen(seed) {}
+  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gen); }
+  double log_uniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
+  Vec3d unit() {
+    for (;;) {
+      const Vec3d v{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+      const double l2 = length_squared(v);
+      if (l2 > 1e-4 && l2 <= 1) return v / std::sqrt(l2);
+    }
+  }
+};
+
+// A random convex polygon with 3..max_n vertices on an ellipse (semi-axes size, size*aspect),
+// centered at `center`, CCW seen from the side `normal` points to.
+inline std::vector<Vec3d> random_convex_polygon(Rng& rng, const Vec3d& center, const Vec3d& normal, double size,
+                                                double aspect, int max_n) {
+  const int n = 3 + static_cast<int>(rng.uniform(0, max_n - 2.0 - 1e-9));
+  std::vector<double> ang;
+  for (int i = 0; i < n; ++i) ang.push_back(rng.uniform(0, 2 * M_PI));
+  std::sort(ang.begin(), ang.end());
+  const Vec3d helper = std::abs(normal.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+  const Vec3d e1 = normalize(cross(helper, normal));
+  const Vec3d e2 = cross(normal, e1);
+  std::vector<Vec3d> poly;
+  for (double a : ang) poly.push_back(center + e1 * (size * std::cos(a)) + e2 * (size * aspect * std::sin(a)));
+  return poly;
+}
+
+inline std::string describe(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "polygon {";
+  for (const auto& v : poly) s << " (" << v.x << "," << v.y << "," << v.z << ")";
+  s << " } P=(" << sp.p.x << "," << sp.p.y << "," << sp.p.z << ") N=(" << sp.n.x << "," << sp.n.y << "," << sp.n.z
+    << ") Rv=(" << sp.rv.x << "," << sp.rv.y << "," << sp.rv.z << ") m=" << sp.shininess;
+  return s.str();
+}
+
+inline ShadingPoint<float> to_float(const ShadingPoint<double>& sp) {
+  return {static_cast<Vec3f>(sp.p), static_cast<Vec3f>(sp.n), static_cast<Vec3f>(sp.rv), static_cast<float>(sp.shininess)};
+}
+inline ShadingPoint<double> to_double(const ShadingPoint<float>& sp) {
+  return {static_cast<Vec3d>(sp.p), static_cast<Vec3d>(sp.n), static_cast<Vec3d>(sp.rv), static_cast<double>(sp.shininess)};
+}
+inline AreaLight<float> to_float(const AreaLight<double>& l) {
+  AreaLight<float> f;
+  for (const auto& v : l.polygon) f.polygon.push_back(static_cast<Vec3f>(v));
+  f.two_sided = l.two_sided;
+  return f;
+}
+inline AreaLight<double> to_double(const AreaLight<float>& l) {
+  AreaLight<double> d;
+  for (const auto& v : l.polygon) d.polygon.push_back(static_cast<Vec3d>(v));
+  d.two_sided = l.two_sided;
+  return d;
+}
+
+// Sum of |1/2 beta_i| over the unclipped polygon: the magnitude scale of the contour sum, used as
+// the absolute floor where the reference is ~0.
+inline double contour_scale(const std::vector<Vec3d>& poly, const Vec3d& p) {
+  double s = 0;
+  for (size_t i = 0; i < poly.size(); ++i)
+    s += 0.5 * angle_between(poly[i] - p, poly[(i + 1) % poly.size()] - p);
+  return s;
+}
+
+// Reference diffuse for a polygon given as convex pieces.
+inline double reference_diffuse(const std::vector<std::vector<Vec3d>>& pieces, const ShadingPoint<double>& sp,
+                                bool two_sided = false) {
+  RefQuery q;
+  q.pieces = pieces;
+  q.two_sided = two_sided;
+  q.p = sp.p; q.n = sp.n; q.rv = sp.rv; q.m = sp.shininess;
+  q.specular = false;
+  return static_cast<double>(reference_integral(q));
+}
+
+inline double reference_specular(const std::vector<std::vector<Vec3d>>& pieces, const ShadingPoint<double>& sp,
+                                 bool two_sided = false, long double tol = 1e-13L) {
+  RefQuery q;
+  q.pieces = pieces;
+  q.two_sided = two_sided;
+  q.p = sp.p; q.n = sp.n; q.rv = sp.rv; q.m = sp.shininess;
+  q.specular = true;
+  q.tolerance = tol;
+  return static_cast<double>(reference_integral(q));
+}
+
+inline bool all_finite(const Response<double>& r) { return std::isfinite(r.diffuse) && std::isfinite(r.specular); }
+inline bool all_finite(const Response<float>& r) { return std::isfinite(r.diffuse) && std::isfinite(r.specular); }
+
+inline SpecularOptions spec_options(SpecularMethod method, double tol = 1e-9, int k = 4) {
+  SpecularOptions o;
+  o.method = method;
+  o.exact_tolerance = tol;
+  o.neighborhood_samples = k;
+  return o;
+}
+
+}  // namespace vlit::test

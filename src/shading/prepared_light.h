@@ -10,7 +10,9 @@
 #include <variant>
 
 #include "conventions.h"
+#include "area_light.h"
 #include "directional_light.h"
+#include "disk_light.h"
 #include "linear_light.h"
 #include "point_light.h"
 #include "scene/light_source.h"
@@ -26,7 +28,8 @@ struct ShadeOptions {
 
 template <class T>
 struct PreparedLight {
-  using Kernel = std::variant<PointLight<T>, DirectionalLight<T>, SpotLight<T>, LinearLight<T>>;
+  using Kernel = std::variant<PointLight<T>, DirectionalLight<T>, SpotLight<T>, LinearLight<T>, PreparedAreaLight<T>,
+                              DiskLight<T>>;
   LightType type = LightType::kPoint;
   Vec3<T> radiance{1, 1, 1};  // colour x intensity
   Kernel kernel;
@@ -68,8 +71,16 @@ PreparedLight<T> prepare_light(const LightSource& light) {
     case LightType::kLinear:
       out.kernel = LinearLight<T>{v(light.from), v(light.to), T(light.falloff)};
       break;
-    default:
-      throw std::invalid_argument(std::string("light model not available yet: ") + light_type_name(light.type));
+    case LightType::kArea: {
+      AreaLight<T> area;
+      for (const Vec3d& q : light.polygon) area.polygon.push_back(v(q));
+      area.two_sided = light.two_sided;
+      out.kernel = prepare_area_light(area);  // per-light constants, once (throws if invalid)
+      break;
+    }
+    case LightType::kDisk:
+      out.kernel = DiskLight<T>{v(light.center), v(light.normal), T(light.radius), light.two_sided};
+      break;
   }
   return out;
 }
@@ -89,7 +100,9 @@ Response<T> shade(const PreparedLight<T>& light, const ShadingPoint<T>& sp, cons
         else {
           SpecularOptions s = options.specular;
           if (!spec) s.method = SpecularMethod::kNone;
-          return shade_linear(k, sp, s, options.linear);
+          if constexpr (std::is_same_v<K, LinearLight<T>>) return shade_linear(k, sp, s, options.linear);
+          else if constexpr (std::is_same_v<K, PreparedAreaLight<T>>) return shade_area(k, sp, s);
+          else return shade_disk(k, sp, s);
         }
       },
       light.kernel);

@@ -2,6 +2,7 @@
 // derived by hand for a simple configuration, times its intensity handling.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "shading/prepared_light.h"
@@ -27,4 +28,39 @@ TEST_CASE("linear light over the point, parallel to the surface: Id = 1/sqrt 2 p
   // Specular off in the options gives no specular even with a shiny point looking at the light.
   options.with_specular = false;
   CHECK(shade(prepare_light<double>(l), sp, options).specular == 0.0);
+}
+
+TEST_CASE("square panel centred above the point: the closed form of a parallel rectangle") {
+  // Id = ∫∫ h^2 / (x^2 + y^2 + h^2)^2 dx dy. For the quarter [0, a] x [0, b] with X = a/h, Y = b/h
+  // (the classic point-to-parallel-rectangle form factor times pi):
+  //   (1/2) [X / sqrt(1+X^2) atan(Y / sqrt(1+X^2)) + Y / sqrt(1+Y^2) atan(X / sqrt(1+Y^2))].
+  // A centred square of half-side a is four quarters with X = Y.
+  auto expected = [](double a, double h) {
+    const double x = a / h, s = std::sqrt(1 + x * x);
+    return 4 * x / s * std::atan(x / s);
+  };
+  const auto sp = make_shading_point<double>({0, 0, 0}, {0, 0, 1}, {0, 0, 5}, 10.0);
+  for (const double h : {0.5, 1.0, 3.0}) {
+    LightSource l;
+    l.type = LightType::kArea;
+    l.polygon = {{-1, -1, h}, {-1, 1, h}, {1, 1, h}, {1, -1, h}};  // counter-clockwise seen from below
+    CHECK(shade(prepare_light<double>(l), sp, ShadeOptions{}).diffuse == doctest::Approx(expected(1, h)).epsilon(1e-12));
+    // The same square wound the other way emits upwards, away from the point: nothing.
+    std::reverse(l.polygon.begin(), l.polygon.end());
+    CHECK(shade(prepare_light<double>(l), sp, ShadeOptions{}).diffuse == 0.0);
+    l.two_sided = true;
+    CHECK(shade(prepare_light<double>(l), sp, ShadeOptions{}).diffuse == doctest::Approx(expected(1, h)).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("disk facing the point on its axis: Id = pi R^2 / (R^2 + h^2)") {
+  // The projected solid angle of a cap of half-angle alpha is pi sin^2 alpha.
+  const auto sp = make_shading_point<double>({0, 0, 0}, {0, 0, 1}, {0, 0, 5}, 10.0);
+  LightSource l;
+  l.type = LightType::kDisk;
+  l.center = {0, 0, 2};
+  l.normal = {0, 0, -1};
+  l.radius = 0.5;
+  const double expected = M_PI * 0.25 / (0.25 + 4);
+  CHECK(shade(prepare_light<double>(l), sp, ShadeOptions{}).diffuse == doctest::Approx(expected).epsilon(1e-6));
 }

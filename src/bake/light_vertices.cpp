@@ -5,19 +5,52 @@
 #include "scene/material.h"
 
 namespace vlit {
+namespace {
+
+// Adds one light's contribution to a chunk of vertices. The light model is resolved once per
+// chunk (std::visit outside the vertex loop), so the inner loop has no dispatch.
+void accumulate_light(const PreparedLight<double>& light, const ShadeOptions& options, const ScenePrimitive& prim,
+                      const Vec3d& eye, double shininess, long begin, long end, Vec3d* diffuse, Vec3d* specular) {
+  const bool windowed = light.range > 0;
+  std::visit(
+      [&](const auto& kernel) {
+#pragma omp parallel for schedule(static)
+        for (long v = begin; v < end; ++v) {
+          const ShadingPoint<double> sp = make_shading_point(prim.positions[v], prim.normals[v], eye, shininess);
+          Response<double> r = shade_kernel<double>(kernel, sp, options);
+          if (windowed) {
+            const double window = range_window(light, sp.p);
+            r.diffuse *= window;
+            r.specular *= window;
+          }
+          diffuse[v - begin] += light.radiance * r.diffuse;
+          if (specular) specular[v - begin] += light.radiance * r.specular;
+        }
+      },
+      light.kernel);
+}
+
+}  // namespace
+
+ScenePlan plan_lighting(const Scene& scene, const LightingRequest& request) {
+  PlanOptions options;
+  options.shade = request.shade;
+  options.has_eye = request.eye.has_value();
+  return make_scene_plan(scene, options);
+}
 
 std::vector<VertexLight> light_scene_vertices(const Scene& scene, const LightingRequest& request) {
-  std::vector<PreparedLight<double>> lights;
-  lights.reserve(scene.lights.size());
-  for (const LightSource& l : scene.lights) lights.push_back(prepare_light<double>(l));
+  return light_scene_vertices(scene, plan_lighting(scene, request), request);
+}
 
-  ShadeOptions options = request.shade;
-  options.with_specular = options.with_specular && request.eye.has_value();
+std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePlan& plan, const LightingRequest& request) {
+  const ShadeOptions& options = plan.shade;
   const Vec3d eye = request.eye.value_or(Vec3d{});
-
   std::vector<VertexLight> out(scene.primitives.size());
   const std::size_t total = scene.vertex_count();
   std::size_t done = 0;
+  constexpr std::size_t kChunk = 1 << 14;  // progress and cancellation granularity
+  std::vector<Vec3d> diffuse(kChunk), specular(options.with_specular ? kChunk : 0);
   for (std::size_t pi = 0; pi < scene.primitives.size(); ++pi) {
     const ScenePrimitive& prim = scene.primitives[pi];
     const double shininess = phong_from_metallic_roughness(scene.material_of(prim)).shininess;
@@ -25,24 +58,19 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const Lighting
     const std::size_t n = prim.positions.size();
     result.diffuse.assign(n, Vec3f{});
     if (options.with_specular) result.specular.assign(n, Vec3f{});
-    // Chunks keep progress reports on the calling thread without locks in the inner loop.
-    const std::size_t chunk = 1 << 14;
-    for (std::size_t begin = 0; begin < n; begin += chunk) {
+    for (std::size_t begin = 0; begin < n; begin += kChunk) {
       if (request.cancel && request.cancel->load()) return out;
-      const long end = static_cast<long>(std::min(n, begin + chunk));
-#pragma omp parallel for schedule(static)
-      for (long v = static_cast<long>(begin); v < end; ++v) {
-        const ShadingPoint<double> sp = make_shading_point(prim.positions[v], prim.normals[v], eye, shininess);
-        Vec3d diffuse, specular;
-        for (const PreparedLight<double>& light : lights) {
-          const Response<double> r = shade(light, sp, options);
-          diffuse += light.radiance * r.diffuse;
-          specular += light.radiance * r.specular;
-        }
-        result.diffuse[v] = static_cast<Vec3f>(diffuse);
-        if (options.with_specular) result.specular[v] = static_cast<Vec3f>(specular);
+      const std::size_t end = std::min(n, begin + kChunk);
+      std::fill(diffuse.begin(), diffuse.end(), Vec3d{});
+      std::fill(specular.begin(), specular.end(), Vec3d{});
+      for (int li : plan.lights_of_primitive[pi])
+        accumulate_light(plan.lights[li], options, prim, eye, shininess, static_cast<long>(begin), static_cast<long>(end),
+                         diffuse.data(), options.with_specular ? specular.data() : nullptr);
+      for (std::size_t v = begin; v < end; ++v) {
+        result.diffuse[v] = static_cast<Vec3f>(diffuse[v - begin]);
+        if (options.with_specular) result.specular[v] = static_cast<Vec3f>(specular[v - begin]);
       }
-      done += static_cast<std::size_t>(end) - begin;
+      done += end - begin;
       if (request.progress) request.progress(done, total);
     }
   }

@@ -1,6 +1,6 @@
-// The per-vertex loop: every vertex of every primitive, every light, all cores.
-// Output is coloured light per vertex, before the material: diffuse = Σ radiance · Id and
-// specular = Σ radiance · Is (kd = ks = 1). The bake stores the diffuse as the COLOR_0
+// The per-vertex loop: every vertex of every primitive, every light the scene plan keeps for
+// it, all cores. Output is coloured light per vertex, before the material: diffuse = Σ radiance ·
+// Id and specular = Σ radiance · Is (kd = ks = 1). The bake stores the diffuse as the COLOR_0
 // multiplier; the renderer combines both with the material.
 #pragma once
 
@@ -9,14 +9,14 @@
 #include <optional>
 #include <vector>
 
+#include "plan/scene_plan.h"
 #include "scene/scene.h"
-#include "shading/prepared_light.h"
 
 namespace vlit {
 
 struct VertexLight {
   std::vector<Vec3f> diffuse;   // per vertex, linear RGB
-  std::vector<Vec3f> specular;  // per vertex, linear RGB (empty when no specular was asked)
+  std::vector<Vec3f> specular;  // per vertex, linear RGB (empty when no specular was planned)
 };
 
 struct LightingRequest {
@@ -28,8 +28,13 @@ struct LightingRequest {
   const std::atomic<bool>* cancel = nullptr;
 };
 
+// The plan light_scene_vertices would follow for this request (for --explain).
+ScenePlan plan_lighting(const Scene& scene, const LightingRequest& request);
+
 // One VertexLight per scene primitive, in the same order. Deterministic: the result does not
-// depend on the number of threads (each vertex is computed independently, lights summed in order).
+// depend on the number of threads (each vertex is computed independently, lights summed in the
+// plan's order).
 std::vector<VertexLight> light_scene_vertices(const Scene& scene, const LightingRequest& request);
+std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePlan& plan, const LightingRequest& request);
 
 }  // namespace vlit

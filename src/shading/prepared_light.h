@@ -85,27 +85,30 @@ PreparedLight<T> prepare_light(const LightSource& light) {
   return out;
 }
 
-// Response of one light at one point for unit intensity and kd = ks = 1 (conventions.h).
+// One light model at one point, for unit intensity and kd = ks = 1 (conventions.h), without the
+// range window. Called with a concrete kernel type, it has no dispatch: the per-vertex loop
+// resolves the model once per batch of vertices and calls this in its inner loop.
+template <class T, class K>
+Response<T> shade_kernel(const K& k, const ShadingPoint<T>& sp, const ShadeOptions& options) {
+  const bool spec = options.with_specular && options.specular.method != SpecularMethod::kNone;
+  if constexpr (std::is_same_v<K, PointLight<T>>) return shade_point(k, sp, spec);
+  else if constexpr (std::is_same_v<K, DirectionalLight<T>>) return shade_directional(k, sp, spec);
+  else if constexpr (std::is_same_v<K, SpotLight<T>>) return shade_spot(k, sp, spec);
+  else {
+    SpecularOptions s = options.specular;
+    if (!spec) s.method = SpecularMethod::kNone;
+    if constexpr (std::is_same_v<K, LinearLight<T>>) return shade_linear(k, sp, s, options.linear);
+    else if constexpr (std::is_same_v<K, PreparedAreaLight<T>>) return shade_area(k, sp, s);
+    else return shade_disk(k, sp, s);
+  }
+}
+
+// Response of one light at one point for unit intensity and kd = ks = 1, range window included.
 template <class T>
 Response<T> shade(const PreparedLight<T>& light, const ShadingPoint<T>& sp, const ShadeOptions& options) {
-  const bool spec = options.with_specular && options.specular.method != SpecularMethod::kNone;
   const T window = range_window(light, sp.p);
   if (window <= T(0)) return {};
-  Response<T> r = std::visit(
-      [&](const auto& k) -> Response<T> {
-        using K = std::decay_t<decltype(k)>;
-        if constexpr (std::is_same_v<K, PointLight<T>>) return shade_point(k, sp, spec);
-        else if constexpr (std::is_same_v<K, DirectionalLight<T>>) return shade_directional(k, sp, spec);
-        else if constexpr (std::is_same_v<K, SpotLight<T>>) return shade_spot(k, sp, spec);
-        else {
-          SpecularOptions s = options.specular;
-          if (!spec) s.method = SpecularMethod::kNone;
-          if constexpr (std::is_same_v<K, LinearLight<T>>) return shade_linear(k, sp, s, options.linear);
-          else if constexpr (std::is_same_v<K, PreparedAreaLight<T>>) return shade_area(k, sp, s);
-          else return shade_disk(k, sp, s);
-        }
-      },
-      light.kernel);
+  Response<T> r = std::visit([&](const auto& k) { return shade_kernel<T>(k, sp, options); }, light.kernel);
   r.diffuse *= window;
   r.specular *= window;
   return r;

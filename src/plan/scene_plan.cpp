@@ -1,0 +1,145 @@
+#include "plan/scene_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace vlit {
+namespace {
+
+struct Bounds {
+  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  bool empty() const { return lo.x > hi.x; }
+  Vec3d center() const { return (lo + hi) * 0.5; }
+  double radius() const { return 0.5 * length(hi - lo); }
+  Vec3d corner(int i) const { return {(i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z}; }
+};
+
+Bounds bounds_of(const ScenePrimitive& p) {
+  Bounds b;
+  for (const Vec3d& v : p.positions) {
+    b.lo = min(b.lo, v);
+    b.hi = max(b.hi, v);
+  }
+  return b;
+}
+
+// Unit normal of the emitting side of a one-sided area light (Newell's normal of the polygon,
+// counter-clockwise seen from the side it emits to) and a point on its plane.
+std::pair<Vec3d, Vec3d> emitter_plane(const LightSource& l) {
+  if (l.type == LightType::kDisk) return {normalize(l.normal), l.center};
+  Vec3d newell;
+  for (std::size_t i = 0; i < l.polygon.size(); ++i) newell += cross(l.polygon[i], l.polygon[(i + 1) % l.polygon.size()]);
+  return {normalize(newell), l.polygon[0]};
+}
+
+// Why the light cannot reach the primitive's box, or empty if it may.
+std::string cannot_reach(const LightSource& l, const Bounds& b) {
+  if (b.empty()) return "no vertices";
+  if ((l.type == LightType::kArea || l.type == LightType::kDisk) && !l.two_sided) {
+    const auto [n, q] = emitter_plane(l);
+    bool any_in_front = false;
+    for (int i = 0; i < 8 && !any_in_front; ++i) any_in_front = dot(b.corner(i) - q, n) > 0;
+    if (!any_in_front) return "the box is behind the emitting side";
+  }
+  if (l.range && (l.type == LightType::kPoint || l.type == LightType::kSpot)) {
+    if (length(b.center() - l.position) - b.radius() >= *l.range) return "beyond the light's range";
+  }
+  if (l.type == LightType::kSpot) {
+    // The bounding sphere misses the cone if the angle from the axis to the sphere's centre,
+    // minus the sphere's angular radius, exceeds the outer cone angle.
+    const Vec3d to_center = b.center() - l.position;
+    const double dist = length(to_center);
+    if (dist > b.radius()) {
+      const double angle_to_center = std::acos(std::clamp(dot(to_center / dist, l.direction), -1.0, 1.0));
+      const double angular_radius = std::asin(std::min(1.0, b.radius() / dist));
+      if (angle_to_center - angular_radius > std::acos(std::clamp(l.cos_outer, -1.0, 1.0))) return "outside the spot cone";
+    }
+  }
+  return {};
+}
+
+const char* diffuse_kernel(const LightSource& l, const ShadeOptions& o) {
+  switch (l.type) {
+    case LightType::kPoint: return "point (eq. 1)";
+    case LightType::kDirectional: return "directional";
+    case LightType::kSpot: return "spot (point x cone)";
+    case LightType::kLinear: {
+      const bool integer = l.falloff == std::round(l.falloff);
+      return integer && !o.linear.force_quadrature ? "linear closed form (eq. 4)" : "linear adaptive quadrature (eq. 4)";
+    }
+    case LightType::kArea: return "area contour integral (eq. 9)";
+    case LightType::kDisk: return "disk as adaptive polygon (eq. 9)";
+  }
+  return "?";
+}
+
+const char* specular_kernel(const ShadeOptions& o) {
+  if (!o.with_specular) return "none";
+  switch (o.specular.method) {
+    case SpecularMethod::kNone: return "none";
+    case SpecularMethod::kPeak: return "peak";
+    case SpecularMethod::kNeighborhood: return "neighborhood";
+    case SpecularMethod::kExact: return "exact";
+  }
+  return "?";
+}
+
+}  // namespace
+
+ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
+  ScenePlan plan;
+  plan.shade = options.shade;
+  plan.shade.with_specular = options.shade.with_specular && options.has_eye &&
+                             options.shade.specular.method != SpecularMethod::kNone;
+  if (!plan.shade.with_specular) plan.shade.specular.method = SpecularMethod::kNone;
+
+  std::vector<const LightSource*> kept;
+  for (std::size_t li = 0; li < scene.lights.size(); ++li) {
+    const LightSource& l = scene.lights[li];
+    const Vec3d radiance = l.color * l.intensity;
+    if (!(radiance.x > 0 || radiance.y > 0 || radiance.z > 0)) {
+      plan.skipped.push_back("light " + l.name + ": zero intensity or colour");
+      continue;
+    }
+    plan.lights.push_back(prepare_light<double>(l));
+    plan.source_of_light.push_back(li);
+    kept.push_back(&l);
+  }
+
+  plan.lights_of_primitive.resize(scene.primitives.size());
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const Bounds b = bounds_of(scene.primitives[p]);
+    for (std::size_t i = 0; i < kept.size(); ++i) {
+      ++plan.pairs_total;
+      const std::string why = cannot_reach(*kept[i], b);
+      if (why.empty()) {
+        plan.lights_of_primitive[p].push_back(static_cast<int>(i));
+        ++plan.pairs_kept;
+      } else {
+        plan.skipped.push_back("light " + kept[i]->name + " x primitive " + std::to_string(p) + ": " + why);
+      }
+    }
+  }
+  return plan;
+}
+
+std::string describe(const ScenePlan& plan, const Scene& scene) {
+  std::ostringstream s;
+  s << "plan: " << plan.lights.size() << " lights, " << scene.primitives.size() << " primitives, "
+    << scene.vertex_count() << " vertices; " << plan.pairs_kept << " of " << plan.pairs_total
+    << " light x primitive pairs lit\n";
+  s << "plan: specular " << specular_kernel(plan.shade) << "\n";
+  for (std::size_t i = 0; i < plan.lights.size(); ++i) {
+    const LightSource& l = scene.lights[plan.source_of_light[i]];
+    std::size_t vertices = 0;
+    for (std::size_t p = 0; p < scene.primitives.size(); ++p)
+      for (int k : plan.lights_of_primitive[p])
+        if (static_cast<std::size_t>(k) == i) vertices += scene.primitives[p].positions.size();
+    s << "plan: light " << l.name << ": " << diffuse_kernel(l, plan.shade) << ", " << vertices << " vertices\n";
+  }
+  for (const std::string& line : plan.skipped) s << "plan: skipped " << line << "\n";
+  return s.str();
+}
+
+}  // namespace vlit

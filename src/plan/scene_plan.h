@@ -1,0 +1,39 @@
+// The scene plan: before any vertex is lit, decide from the scene and the options what work is
+// needed, and leave out the rest ("leave out what a given scene does not need"):
+// - lights that cannot contribute anywhere (zero intensity or colour) are dropped;
+// - light x primitive pairs that cannot contribute are skipped: a one-sided area or disk light
+//   whose emitting side does not reach the primitive's bounding box, a spot light whose cone
+//   misses the primitive's bounding sphere, a light whose glTF range ends before the box;
+// - specular work is planned only when an eye is given and asked for;
+// - every per-light constant is computed once (PreparedLight).
+// describe() prints the plan for `--explain`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "scene/scene.h"
+#include "shading/prepared_light.h"
+
+namespace vlit {
+
+struct PlanOptions {
+  ShadeOptions shade;
+  bool has_eye = false;
+};
+
+struct ScenePlan {
+  std::vector<PreparedLight<double>> lights;          // the lights that can contribute somewhere
+  std::vector<std::size_t> source_of_light;          // parallel to lights: index into Scene::lights
+  std::vector<std::vector<int>> lights_of_primitive;  // per scene primitive: indices into lights
+  ShadeOptions shade;                                 // with_specular already resolved
+  std::vector<std::string> skipped;                   // one line per skipped light or pair, why
+  std::size_t pairs_total = 0, pairs_kept = 0;
+};
+
+ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options);
+
+// Human-readable plan: which kernels run where, what was skipped and why.
+std::string describe(const ScenePlan& plan, const Scene& scene);
+
+}  // namespace vlit

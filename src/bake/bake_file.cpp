@@ -1,5 +1,6 @@
 #include "bake/bake_file.h"
 
+#include <chrono>
 #include <filesystem>
 
 #include "bake/light_vertices.h"
@@ -20,9 +21,13 @@ bool same_file(const std::string& a, const std::string& b) {
 
 BakeFileResult bake_file(const std::string& input, const std::string& output, const BakeFileOptions& options) {
   if (same_file(input, output)) throw InputError(output, "refusing to overwrite the input; choose another output path");
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  auto t = Clock::now();
   LoadedScene loaded = load_scene(input, options.lights_path, options.use_file_lights);
   if (!loaded.gltf) throw InputError(input, "bake writes vertex colors into glTF and needs a .gltf or .glb input");
   BakeFileResult result;
+  result.seconds.load = since(t);
   result.warnings = std::move(loaded.warnings);
   result.lights = loaded.scene.lights.size();
   if (loaded.scene.lights.empty())
@@ -32,16 +37,26 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   request.shade.with_specular = false;  // a bake stores the view-independent diffuse light
   request.progress = options.progress;
   request.cancel = options.cancel;
-  const auto light = light_scene_vertices(loaded.scene, request);
+  t = Clock::now();
+  const ScenePlan plan = plan_lighting(loaded.scene, request);
+  result.plan = describe(plan, loaded.scene);
+  result.seconds.plan = since(t);
+  t = Clock::now();
+  const auto light = light_scene_vertices(loaded.scene, plan, request);
+  result.seconds.light = since(t);
   if (options.cancel && options.cancel->load()) throw InputError(input, "interrupted; no output written");
 
+  t = Clock::now();
   tinygltf::Model model = std::move(loaded.gltf->model);
   result.report = bake_vertex_colors(model, loaded.scene, light, options.encode);
+  result.seconds.encode = since(t);
   if (result.report.replaced_attributes > 0)
     result.warnings.push_back(input + ": " + (options.encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") +
                               " the existing " + options.encode.target + " of " +
                               std::to_string(result.report.replaced_attributes) + " primitive(s)");
+  t = Clock::now();
   write_gltf(std::move(model), input, output);
+  result.seconds.write = since(t);
   return result;
 }
 

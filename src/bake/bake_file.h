@@ -21,8 +21,14 @@ struct BakeFileOptions {
   std::function<void(std::size_t, std::size_t)> progress;  // (vertices done, total), may be empty
 };
 
+struct StageTimes {
+  double load = 0, plan = 0, light = 0, encode = 0, write = 0;  // seconds
+};
+
 struct BakeFileResult {
   BakeReport report;
+  std::string plan;   // describe(plan): what runs, what was skipped and why (for --explain)
+  StageTimes seconds;
   std::vector<std::string> warnings;  // one line each, prefixed with the file name
   std::size_t lights = 0;
 };

@@ -191,8 +191,6 @@ std::string write_lights(const std::string& name, const std::string& json) {
 }
 
 // Renders `scene` with `lights`, compares with the golden NAME.png, or rewrites the golden.
-// A light model this build cannot shade yet ("light model not available yet") skips the case
-// with a message instead of failing.
 void check_golden(const std::string& name, const std::string& scene, const std::string& lights, const std::string& extra = "") {
   fs::create_directories(kFailureDir);
   const fs::path actual_path = kFailureDir / (name + ".actual.png");
@@ -201,10 +199,6 @@ void check_golden(const std::string& name, const std::string& scene, const std::
   fs::remove(diff_path);
   const auto r = run_command(kVlit + " render " + q(scene) + " --lights " + q(lights) + " -o " + q(actual_path.string()) +
                              " --width 160 --height 120 --samples 4 -q " + extra);
-  if (r.exit_code != 0 && r.err.find("light model not available yet") != std::string::npos) {
-    MESSAGE("golden " << name << " skipped: " << r.err);
-    return;
-  }
   REQUIRE_MESSAGE(r.exit_code == 0, "vlit render failed for golden " << name << ": " << r.err);
   if (updating_goldens()) {
     fs::create_directories(kGoldenDir);

@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "area_specular_peak.h"
 
@@ -168,6 +169,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   }
   const R fx = -dot(view.u, view.D), fy = -dot(view.v, view.D);  // foot of P
 
+  const R lobe_width = R(1) / std::sqrt(shininess + R(1));  // ~ angular width of cos^m
   std::array<Tri<R>, kExactMaxTriangles> heap;
   int size = 0;
   R value = 0, error = 0;  // running sums over the work list
@@ -176,6 +178,15 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
     t.x[0] = x0; t.x[1] = x1; t.x[2] = x2;
     t.y[0] = y0; t.y[1] = y1; t.y[2] = y2;
     evaluate(f, t);
+    // Forced refinement at the lobe's peak: a triangle with the peak at a corner is split
+    // until its angular size (as seen from P) is below 2 lobe widths, so a narrow lobe cannot
+    // slip between the nodes of a large triangle (false convergence).
+    const bool at_peak = (x0 == ax && y0 == ay) || (x1 == ax && y1 == ay) || (x2 == ax && y2 == ay);
+    if (shininess > R(0) && at_peak) {
+      const R size = std::max({std::hypot(x1 - x0, y1 - y0), std::hypot(x2 - x0, y2 - y0), std::hypot(x2 - x1, y2 - y1)});
+      const R dist = length(view.D + view.u * ax + view.v * ay);
+      if (size > R(2) * lobe_width * dist) t.error = std::numeric_limits<R>::infinity();
+    }
     value += t.value; error += t.error;
     ++size;
     std::push_heap(heap.begin(), heap.begin() + size, less_error<R>);
@@ -206,7 +217,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
     push(m12x, m12y, m20x, m20y, m01x, m01y);
     // Running sums drift by rounding; recount them exactly now and then.
     value -= t.value; error -= t.error;
-    if (++splits % 32 == 0) {
+    if (++splits % 32 == 0 || !std::isfinite(error)) {
       value = 0; error = 0;
       for (int k = 0; k < size; ++k) { value += heap[k].value; error += heap[k].error; }
     }

@@ -218,7 +218,10 @@ inline LD reference_integral(const RefQuery& q) {
       // phi from phi0 to phi0 + dphi (signed); split at the hit's angle if inside.
       LD sub = 0;
       const LD sign = dphi > 0 ? 1 : -1;
-      auto g = [&](LD t) { return along(phi0 + sign * t); };
+      // Boost's Gauss-Kronrod error estimate has an absolute floor: integrate O(1) values.
+      const LD norm = along(phi0 + sign * std::abs(dphi) / 2);
+      const LD inv_norm = norm != 0 && std::isfinite(norm) ? 1 / std::abs(norm) : LD(1);
+      auto g = [&](LD t) { return along(phi0 + sign * t) * inv_norm; };
       LD cut = -1;
       if (has_hit) {
         LD rel = sign * (hit_phi - phi0);
@@ -232,7 +235,7 @@ inline LD reference_integral(const RefQuery& q) {
       } else {
         sub = gauss_kronrod<LD, 31>::integrate(g, LD(0), std::abs(dphi), 14, q.tolerance);
       }
-      total += sign * sub;
+      total += sign * sub / inv_norm;
     }
   }
   return total;

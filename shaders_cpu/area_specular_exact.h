@@ -27,7 +27,9 @@
 // Departures: none from the definition; the paper's Is is the peak (area_specular_peak.h).
 // Stiff cases: tests/kernels/area/area_specular_test.cpp "stiff exact specular cases" (tiny,
 // distant, thin, huge, grazing, horizon crossing, behind, shininess 1..1e4).
-// Measured accuracy: docs/area-lights.md (≤ tolerance on every test case).
+// Measured accuracy (docs/area-lights.md; `./build/area/tests/area_light_tests`): 6.2e-11 on 40
+// random cases, ≤ 2.2e-9 on the stiff table, m up to 1e4 — but NOT met: a light 1e3 times larger
+// than its distance (15% low: the fixed work list fills), m = 1e4 at the light's edge (3e-7).
 #pragma once
 
 #include <algorithm>

@@ -25,8 +25,9 @@
 // grazing the plane, Rv parallel to the light, Rv exactly toward a vertex, light crossing the
 // horizon, shininess 1..1e4 (lobe from the angle via log1p, accurate for alpha -> 0).
 //
-// Measured accuracy: peak angle vs a dense search + sidebar-formula refinement in long double
-// ≤ 1e-12 rad (double), see docs/area-lights.md.
+// Measured accuracy: peak angle vs a dense search + sidebar-formula refinement in long double:
+// 3.9e-15 rad, direction 1.9e-14 rad on 294 random cases (docs/area-lights.md;
+// `./build/area/tests/area_light_tests -tc="*peak*"`).
 #pragma once
 
 #include <cmath>

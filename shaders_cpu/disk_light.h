@@ -16,7 +16,8 @@
 // Conventions: conventions.h. Departures from the paper: the paper has no disk lights.
 // Stiff cases: tests/kernels/area/disk_test.cpp (far disk = point light, P near the rim,
 // horizon crossing, behind, degenerate radius rejected).
-// Measured accuracy: docs/area-lights.md (error vs edge count).
+// Measured accuracy (docs/area-lights.md, `./build/area/tests/area_light_tests -tc="disk*"`):
+// diffuse 5.5e-8 .. 7.7e-7 at n = 64 away from the rim, 9.1e-5 with P 0.1 radius from the rim.
 #pragma once
 
 #include <cmath>

@@ -13,6 +13,7 @@ packages=(
   doctest-dev                            # tests
   libboost-dev                           # Boost.Math quadrature for independent test references
   libbenchmark-dev                       # bench/ programs
+  clang libclang-rt-14-dev libomp-dev    # fuzz/ targets (libFuzzer, clang's OpenMP), run by .ci/run
 )
 
 missing=()

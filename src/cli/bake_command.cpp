@@ -14,6 +14,7 @@
 #include "cli/terminal.h"
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
+#include "gltf/gltf_scene.h"
 
 namespace vlit::cli {
 namespace {
@@ -33,6 +34,7 @@ struct BakeArgs {
   bool no_unlit = false;
   bool no_file_lights = false;
   bool quiet = false;
+  std::size_t max_vertices = SceneLimits{}.max_vertices;
 };
 
 // An input argument as a list of glTF files: a file as is, a directory searched recursively, a
@@ -83,6 +85,7 @@ void print_summary(const std::string& output, const BakeFileResult& r, const std
 }
 
 int run_bake(const BakeArgs& args) {
+  set_default_scene_limits({args.max_vertices});
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   std::vector<std::pair<std::string, fs::path>> files;
@@ -166,6 +169,9 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
   cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
+  cmd->add_option("--max-vertices", args->max_vertices,
+                  "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
+      ->check(CLI::PositiveNumber);
   cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.\n"
               "Outputs are written atomically; a failed or interrupted file leaves no output. A batch keeps going\n"
               "when a file fails and exits 1 with a summary.");

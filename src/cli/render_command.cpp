@@ -8,6 +8,7 @@
 #include "cli/commands.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
+#include "gltf/gltf_scene.h"
 #include "raster/raster.h"
 #include "scene/load_scene.h"
 
@@ -22,6 +23,8 @@ struct RenderArgs {
   bool cull_back_faces = false;
   bool quiet = false;
   bool no_file_lights = false;
+  std::size_t max_vertices = SceneLimits{}.max_vertices;
+  std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
 };
 
 raster::Camera to_raster_camera(const SceneCamera& c) {
@@ -42,6 +45,11 @@ raster::Camera to_raster_camera(const SceneCamera& c) {
 }
 
 int run_render(const RenderArgs& args) {
+  if (std::uint64_t(args.width) * std::uint64_t(args.height) > args.max_pixels)
+    throw InputError(args.output, std::to_string(args.width) + " x " + std::to_string(args.height) +
+                                      " pixels exceed the limit of " + std::to_string(args.max_pixels) +
+                                      " (raise it with --max-pixels)");
+  set_default_scene_limits({args.max_vertices});
   LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
   for (const auto& w : loaded.warnings) print_warning(w);
   const Scene& scene = loaded.scene;
@@ -120,6 +128,11 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
   cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
+  cmd->add_option("--max-vertices", args->max_vertices,
+                  "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-pixels", args->max_pixels, "Refuse an image larger than this many pixels (default 67108864)")
+      ->check(CLI::PositiveNumber);
   cmd->footer("The camera is the glTF's first camera if it has one, otherwise a 3/4 view framing the whole scene.");
   return [args] { return run_render(*args); };
 }

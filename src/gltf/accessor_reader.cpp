@@ -103,8 +103,10 @@ std::vector<double> read_accessor_as_doubles(const tinygltf::Model& model, int i
   for (const auto& b : model.buffers) total_buffer_bytes += b.data.size();
   if (acc.bufferView >= 0 && count > total_buffer_bytes / (static_cast<std::size_t>(components) * bytes) + 1)
     throw InputError(file, "accessor count " + std::to_string(count) + " exceeds the file's buffer data", where);
-  if (acc.bufferView < 0 && !acc.sparse.isSparse && count > (std::size_t(1) << 28))
-    throw InputError(file, "accessor count is unreasonably large", where);
+  // Without a bufferView (zeros, possibly with sparse values) nothing in the file bounds the count:
+  // cap the array at 2^27 doubles (1 GiB), sparse or not.
+  if (acc.bufferView < 0 && count > (std::size_t(1) << 27) / static_cast<std::size_t>(components))
+    throw InputError(file, "accessor count " + std::to_string(count) + " without a bufferView is unreasonably large", where);
 
   std::vector<double> out(count * components, 0.0);  // no bufferView: zeros (glTF spec)
   const std::size_t element_bytes = static_cast<std::size_t>(components) * bytes;

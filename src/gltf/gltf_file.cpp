@@ -30,7 +30,14 @@ bool regular_file_exists(const std::string& path, void*) {
 
 std::string literal_path(const std::string& path, void*) { return path; }
 
-bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+// The sum over all external files of one asset: many buffers (or images) may name the same big
+// file, and each is read again.
+constexpr std::uint64_t kMaxExternalBytesTotal = std::uint64_t(1) << 32;
+struct ExternalReadBudget {
+  std::uint64_t remaining = kMaxExternalBytesTotal;
+};
+
+bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user_data) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
     if (err) *err += "not a regular file: " + path + "\n";
@@ -40,6 +47,14 @@ bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const 
   if (ec || size > kMaxExternalFileBytes) {
     if (err) *err += "file too large or unreadable: " + path + "\n";
     return false;
+  }
+  auto* budget = static_cast<ExternalReadBudget*>(user_data);
+  if (budget) {
+    if (size > budget->remaining) {
+      if (err) *err += "external files of this asset exceed " + std::to_string(kMaxExternalBytesTotal) + " bytes in total: " + path + "\n";
+      return false;
+    }
+    budget->remaining -= size;
   }
   std::ifstream in(path, std::ios::binary);
   out->resize(static_cast<std::size_t>(size));
@@ -84,7 +99,8 @@ GltfFile load_gltf_file(const std::string& path) {
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&keep_image_undecoded, nullptr);
-  loader.SetFsCallbacks(tinygltf::FsCallbacks{&regular_file_exists, &literal_path, &read_regular_file, &refuse_write, nullptr});
+  ExternalReadBudget budget;
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&regular_file_exists, &literal_path, &read_regular_file, &refuse_write, &budget});
   loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
   std::string err, warn;
   const std::string base_dir = [&] {

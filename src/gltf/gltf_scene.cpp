@@ -1,6 +1,7 @@
 #include "gltf/gltf_scene.h"
 
 #include <cmath>
+#include <cstdint>
 #include <algorithm>
 #include <functional>
 
@@ -50,8 +51,16 @@ bool finite_affine(const Affine& a) {
 
 Vec3d vec3_at(const std::vector<double>& data, std::size_t i) { return {data[3 * i], data[3 * i + 1], data[3 * i + 2]}; }
 
+SceneLimits g_default_limits;
+
+std::string limit_message(const char* what, std::size_t limit) {
+  return std::string("the scene needs more than ") + std::to_string(limit) + " " + what +
+         " (the limit that protects the machine; raise it with --max-vertices)";
+}
+
 void read_primitive(const GltfFile& file, int node_index, int mesh_index, int prim_index, const Affine& world,
-                    Scene& scene, std::vector<std::string>& warnings) {
+                    Scene& scene, std::vector<std::string>& warnings, const SceneLimits& limits,
+                    std::size_t& vertices_so_far, std::size_t& corners_so_far) {
   const tinygltf::Model& model = file.model;
   const tinygltf::Primitive& prim = model.meshes[mesh_index].primitives[prim_index];
   const std::string where = "meshes[" + std::to_string(mesh_index) + "].primitives[" + std::to_string(prim_index) + "]";
@@ -69,6 +78,22 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
                                           ? &model.accessors[pos_it->second] : nullptr;
   if (!pos_acc || pos_acc->type != TINYGLTF_TYPE_VEC3)
     throw InputError(file.path, "POSITION must be a VEC3 accessor", where);
+  // Limits first, from the accessor counts alone: nothing is allocated for an asset beyond them.
+  // (Running totals, not scene.vertex_count(): that is a loop over the primitives, quadratic here.)
+  if (pos_acc->count > limits.max_vertices - std::min(vertices_so_far, limits.max_vertices))
+    throw InputError(file.path, limit_message("vertices", limits.max_vertices), where);
+  const std::size_t max_corners =
+      limits.max_vertices > SIZE_MAX / (3 * SceneLimits::kCornersPerVertex) ? SIZE_MAX / 3
+                                                                            : limits.max_vertices * SceneLimits::kCornersPerVertex;
+  const std::size_t draw_count = prim.indices >= 0 && static_cast<std::size_t>(prim.indices) < model.accessors.size()
+                                     ? model.accessors[prim.indices].count : pos_acc->count;
+  if (draw_count > max_corners) throw InputError(file.path, limit_message("triangle corners", max_corners), where);
+  // A strip or a fan of n indices makes n - 2 triangles.
+  const std::size_t corners = mode == TINYGLTF_MODE_TRIANGLES ? draw_count : 3 * draw_count;
+  if (corners > max_corners - std::min(corners_so_far, max_corners))
+    throw InputError(file.path, limit_message("triangle corners", max_corners), where);
+  corners_so_far += corners;
+  vertices_so_far += pos_acc->count;
   const std::vector<double> pos = read_accessor_as_doubles(model, pos_it->second, file.path);
   const std::size_t vertex_count = pos.size() / 3;
 
@@ -92,6 +117,7 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
 
   out.positions.resize(vertex_count);
   std::size_t non_finite = 0;
+  std::vector<bool> bad;  // vertices with a non-finite position (filled only if there are any)
   for (std::size_t i = 0; i < vertex_count; ++i) {
     out.positions[i] = world.apply_point(vec3_at(pos, i));
     if (!is_finite(out.positions[i])) { out.positions[i] = {}; ++non_finite; }
@@ -100,7 +126,7 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
     // Triangles touching a non-finite vertex are dropped; those vertices get no light.
     warnings.push_back(file.path + ": " + where + ": " + std::to_string(non_finite) +
                        " vertices have non-finite positions; they receive no light");
-    std::vector<bool> bad(vertex_count, false);
+    bad.assign(vertex_count, false);
     for (std::size_t i = 0; i < vertex_count; ++i) bad[i] = !is_finite(world.apply_point(vec3_at(pos, i)));
     std::vector<std::uint32_t> kept;
     for (std::size_t t = 0; t + 2 < out.triangles.size(); t += 3)
@@ -112,6 +138,10 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
   const auto normal_it = prim.attributes.find("NORMAL");
   std::vector<Vec3d> computed;
   if (normal_it != prim.attributes.end()) {
+    // Compare counts before reading: a NORMAL accessor without a bufferView could be huge.
+    if (normal_it->second >= 0 && static_cast<std::size_t>(normal_it->second) < model.accessors.size() &&
+        model.accessors[normal_it->second].count != vertex_count)
+      throw InputError(file.path, "NORMAL and POSITION counts differ", where);
     const std::vector<double> nrm = read_accessor_as_doubles(model, normal_it->second, file.path);
     if (nrm.size() != pos.size()) throw InputError(file.path, "NORMAL and POSITION counts differ", where);
     out.normals.resize(vertex_count);
@@ -132,6 +162,10 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
   } else {
     out.normals = angle_weighted_normals(out.positions, out.triangles);
   }
+  // A vertex whose position was not finite sits at the origin with a zero normal: every light
+  // model gives zero for a zero normal, so it receives no light, as the warning says.
+  for (std::size_t i = 0; i < bad.size(); ++i)
+    if (bad[i]) out.normals[i] = {};
   scene.primitives.push_back(std::move(out));
 }
 
@@ -233,8 +267,16 @@ std::vector<std::uint32_t> triangle_list(int mode, const std::vector<std::uint32
   return tris;
 }
 
+void set_default_scene_limits(const SceneLimits& limits) { g_default_limits = limits; }
+SceneLimits default_scene_limits() { return g_default_limits; }
+
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
+  return build_scene(file, warnings, g_default_limits);
+}
+
+Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits) {
   const tinygltf::Model& model = file.model;
+  std::size_t vertices_so_far = 0, corners_so_far = 0;
   Scene scene;
   for (const auto& m : model.materials) scene.materials.push_back(read_material(m));
 
@@ -253,8 +295,16 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
       if (!is_child[i]) roots.push_back(static_cast<int>(i));
   }
 
+  // Depth first, parents before children, in file order, with an explicit stack: a chain of nodes
+  // as deep as the file is long must not overflow the call stack (a recursive walk did, on a
+  // chain of 10^5 nodes: tests/robustness/limits_test.cpp).
   std::vector<int> visits(model.nodes.size(), 0);
-  std::function<void(int, const Affine&)> visit = [&](int index, const Affine& parent) {
+  std::vector<std::pair<int, Affine>> stack;
+  for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.emplace_back(*r, Affine{});
+  while (!stack.empty()) {
+    const int index = stack.back().first;
+    const Affine parent = stack.back().second;
+    stack.pop_back();
     if (index < 0 || static_cast<std::size_t>(index) >= model.nodes.size())
       throw InputError(file.path, "node " + std::to_string(index) + " does not exist");
     if (visits[index]++ > 0)
@@ -266,7 +316,8 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
       if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
         throw InputError(file.path, "mesh " + std::to_string(node.mesh) + " does not exist", "nodes[" + std::to_string(index) + "]");
       for (std::size_t p = 0; p < model.meshes[node.mesh].primitives.size(); ++p)
-        read_primitive(file, index, node.mesh, static_cast<int>(p), world, scene, warnings);
+        read_primitive(file, index, node.mesh, static_cast<int>(p), world, scene, warnings, limits, vertices_so_far,
+                       corners_so_far);
     }
     if (node.camera >= 0 && static_cast<std::size_t>(node.camera) < model.cameras.size() && !scene.camera)
       scene.camera = read_camera(model.cameras[node.camera], world);
@@ -277,9 +328,8 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
         if (auto light = read_punctual_light(file, index, light_ref.Get<int>(), world, warnings))
           scene.lights.push_back(*light);
     }
-    for (int child : node.children) visit(child, world);
-  };
-  for (int r : roots) visit(r, Affine{});
+    for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.emplace_back(*child, world);
+  }
 
   for (auto& p : scene.primitives)
     if (p.material >= static_cast<int>(scene.materials.size())) {

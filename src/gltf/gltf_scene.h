@@ -11,9 +11,24 @@
 
 namespace vlit {
 
-// Throws InputError for a malformed asset (bad accessors, indices out of range, node cycles).
-// Primitives that cannot be lit (points, lines, missing POSITION) are skipped with a warning
-// appended to `warnings`.
+// Limits that protect the machine from an asset that would need more memory than any real one:
+// checked against accessor counts before anything is allocated. Every node instance of a mesh
+// counts (the bake lights each instance separately).
+struct SceneLimits {
+  std::size_t max_vertices = 50'000'000;  // all primitives of all node instances
+  // Triangle corners (3 per triangle) may be at most kCornersPerVertex x max_vertices.
+  static constexpr std::size_t kCornersPerVertex = 6;
+};
+
+// The limits build_scene uses when none are passed; the command line sets them from
+// --max-vertices before loading anything (one process, one setting).
+void set_default_scene_limits(const SceneLimits& limits);
+SceneLimits default_scene_limits();
+
+// Throws InputError for a malformed asset (bad accessors, indices out of range, node cycles) or one
+// beyond `limits`. Primitives that cannot be lit (points, lines, missing POSITION) are skipped with
+// a warning appended to `warnings`.
+Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits);
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings);
 
 // glTF primitive modes TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN as a triangle list (3 indices per

@@ -62,13 +62,30 @@ void merge_buffers(tinygltf::Model& model) {
   model.buffers.assign(1, std::move(merged));
 }
 
-// Repairs what tinygltf 2.7 serializes wrongly: it always writes a perspective camera's "zfar",
-// even 0 for an infinite projection, which the glTF spec forbids (zfar must be > 0 when present).
-void repair_serialized_json(nlohmann::json& root) {
+// Repairs what tinygltf 2.7 serializes wrongly:
+// - an object with no properties (a node, scene, texture, ... that is just {}) comes out as null,
+//   which no loader accepts (tinygltf itself: "`nodes' does not contain an JSON object"; found by
+//   the malformed corpus, tests/robustness/corpus_test.cpp): top-level arrays get {} back;
+// - an empty array is dropped, so a skin read with "joints": [] is written without its required
+//   "joints" and cannot be read again (same corpus, skin/empty_joints_array.gltf);
+// - it leaves out a perspective camera's "yfov" when it is <= 0, but its reader requires it, so
+//   the output could not be read again (found by fuzz/fuzz_gltf.cpp): the model's value is put back;
+// - it always writes a perspective camera's "zfar", even 0 for an infinite projection, which the
+//   glTF spec forbids (zfar must be > 0 when present).
+void repair_serialized_json(nlohmann::json& root, const tinygltf::Model& model) {
+  for (auto& [key, value] : root.items())
+    if (value.is_array())
+      for (auto& element : value)
+        if (element.is_null()) element = nlohmann::json::object();
+  if (root.contains("skins") && root["skins"].is_array())
+    for (auto& skin : root["skins"])
+      if (skin.is_object() && !skin.contains("joints")) skin["joints"] = nlohmann::json::array();
   if (!root.contains("cameras") || !root["cameras"].is_array()) return;
-  for (auto& camera : root["cameras"]) {
-    if (!camera.contains("perspective")) continue;
+  for (std::size_t i = 0; i < root["cameras"].size(); ++i) {
+    auto& camera = root["cameras"][i];
+    if (!camera.is_object() || !camera.contains("perspective") || !camera["perspective"].is_object()) continue;
     auto& p = camera["perspective"];
+    if (!p.contains("yfov") && i < model.cameras.size()) p["yfov"] = model.cameras[i].perspective.yfov;
     if (p.contains("zfar") && p["zfar"].is_number() && !(p["zfar"].get<double>() > 0)) p.erase("zfar");
   }
 }
@@ -82,16 +99,16 @@ void append_u32(std::string& s, std::uint32_t v) { s.append(reinterpret_cast<con
 
 // Applies repair_serialized_json to a .gltf text or to the JSON chunk of a .glb, keeping the
 // binary chunk as it is.
-std::string repaired(const std::string& bytes, bool binary) {
+std::string repaired(const std::string& bytes, bool binary, const tinygltf::Model& model) {
   if (!binary) {
     nlohmann::json root = nlohmann::json::parse(bytes);
-    repair_serialized_json(root);
+    repair_serialized_json(root, model);
     return root.dump(2);
   }
   // GLB: 12-byte header, then chunks of (length, type, data) with 4-byte aligned lengths.
   const std::uint32_t json_length = read_u32(bytes, 12);
   nlohmann::json root = nlohmann::json::parse(bytes.substr(20, json_length));
-  repair_serialized_json(root);
+  repair_serialized_json(root, model);
   std::string json = root.dump();
   while (json.size() % 4 != 0) json.push_back(' ');
   const std::string rest = bytes.substr(20 + json_length);
@@ -136,7 +153,7 @@ void write_gltf(tinygltf::Model model, const std::string& input_path, const std:
   std::ostringstream stream;
   if (!writer.WriteGltfSceneToStream(&model, stream, /*prettyPrint=*/!binary, binary))
     throw InputError(output_path, "tinygltf could not serialize the model");
-  write_file_atomically(output_path, repaired(stream.str(), binary));
+  write_file_atomically(output_path, repaired(stream.str(), binary, model));
 }
 
 }  // namespace vlit

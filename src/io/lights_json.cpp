@@ -194,6 +194,10 @@ std::vector<LightSource> parse_lights_json(const std::string& text, const std::s
     const size_t byte = std::min<size_t>(e.byte, text.size());
     const long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(byte ? byte - 1 : 0), '\n');
     throw InputError(name, "invalid JSON: " + std::string(e.what()), "line " + std::to_string(line));
+  } catch (const json::exception& e) {
+    // Not a syntax error but still a bad file, e.g. out_of_range 406 for a number beyond double
+    // (found by fuzz/fuzz_lights_json.cpp; it escaped as a message without the file name).
+    throw InputError(name, "invalid JSON: " + std::string(e.what()));
   }
   if (!root.is_object() || !root.contains("lights") || !root.at("lights").is_array())
     throw InputError(name, "expected an object with a \"lights\" array");

@@ -7,6 +7,7 @@
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include "core/input_error.h"
+#include "gltf/gltf_scene.h"
 #include "mesh/vertex_normals.h"
 
 namespace vlit {
@@ -46,6 +47,10 @@ Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings
   const bool ok = OpenMesh::IO::read_mesh(mesh, path, options);
   if (!ok) throw InputError(path, "cannot read this " + extension_of(path) + " file (OpenMesh reader failed)");
   if (mesh.n_faces() == 0) throw InputError(path, "the mesh has no faces");
+  // Same vertex limit as glTF scenes (gltf/gltf_scene.h); OpenMesh's own memory is bounded by the file.
+  if (const std::size_t limit = default_scene_limits().max_vertices; mesh.n_vertices() > limit)
+    throw InputError(path, "the mesh has more than " + std::to_string(limit) +
+                               " vertices (the limit that protects the machine; raise it with --max-vertices)");
 
   ScenePrimitive prim;
   prim.positions.reserve(mesh.n_vertices());

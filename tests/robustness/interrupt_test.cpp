@@ -1,0 +1,108 @@
+// SIGINT during a batch bake (`vlit bake DIR -o OUTDIR`): the file being lit is abandoned, every
+// finished file is complete, no partial or temporary file is left, and the exit status is 130.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "gltf/gltf_file.h"
+#include "support/gltf_builder.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A grid of (n+1)^2 vertices, 2 n^2 triangles, in the z = 0 plane.
+void add_grid(vlit::test::GltfBuilder& b, int n) {
+  std::vector<float> positions;
+  std::vector<std::uint32_t> indices;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) positions.insert(positions.end(), {float(x) / n, float(y) / n, 0});
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      const std::uint32_t i = y * (n + 1) + x;
+      indices.insert(indices.end(), {i, i + 1, i + n + 2, i, i + n + 2, i + n + 1});
+    }
+  b.add_node(b.add_mesh(positions, {}, indices));
+}
+
+}  // namespace
+
+TEST_CASE("SIGINT during a batch bake: finished files complete, no partial file, exit 130") {
+  const fs::path dir = vlit::test::temp_dir("robust-sigint");
+  const fs::path in = dir / "in", out = dir / "out";
+  fs::create_directories(in);
+  vlit::test::GltfBuilder b;
+  add_grid(b, 400);  // 160 801 vertices per file
+  const int kFiles = 24;
+  for (int i = 0; i < kFiles; ++i) b.write((in / ("grid" + std::to_string(100 + i) + ".glb")).string());
+  {
+    // Many linear lights make each file take a noticeable time.
+    std::ofstream lights(dir / "lights.json");
+    lights << R"({"lights": [)";
+    for (int i = 0; i < 24; ++i)
+      lights << (i ? "," : "") << R"({"type": "linear", "from": [)" << i * 0.05 << R"(, 0, 1], "to": [)" << i * 0.05
+             << R"(, 1, 1.5], "intensity": 1})";
+    lights << "]}";
+  }
+
+  const std::string vlit = VLIT_BINARY;
+  const std::string lights = (dir / "lights.json").string(), err_path = (dir / "stderr.txt").string();
+  const pid_t pid = ::fork();
+  REQUIRE(pid >= 0);
+  if (pid == 0) {
+    const int fd = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 2);
+    ::execl(vlit.c_str(), vlit.c_str(), "bake", in.c_str(), "-o", out.c_str(), "--lights", lights.c_str(), "--quiet",
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Interrupt as soon as the first output exists.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
+  auto count_outputs = [&] {
+    std::size_t n = 0;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out, ec))
+      if (e.path().extension() == ".glb") ++n;
+    return n;
+  };
+  while (count_outputs() == 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  REQUIRE_MESSAGE(count_outputs() > 0, "no output appeared within the deadline");
+  ::kill(pid, SIGINT);
+  int status = 0;
+  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  std::ifstream err_file(err_path);
+  const std::string err((std::istreambuf_iterator<char>(err_file)), std::istreambuf_iterator<char>());
+  CAPTURE(err);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 130);
+  CHECK(err.find("interrupted") != std::string::npos);
+
+  std::size_t complete = 0;
+  for (const auto& e : fs::directory_iterator(out)) {
+    const std::string name = e.path().filename().string();
+    CAPTURE(name);
+    CHECK_MESSAGE(name.find(".vlit-tmp") == std::string::npos, "temporary file left behind");
+    if (e.path().extension() != ".glb") continue;
+    const vlit::GltfFile baked = vlit::load_gltf_file(e.path().string());  // throws if truncated
+    for (const auto& mesh : baked.model.meshes)
+      for (const auto& prim : mesh.primitives) {
+        REQUIRE(prim.attributes.count("COLOR_0"));
+        CHECK(baked.model.accessors[prim.attributes.at("COLOR_0")].count ==
+              baked.model.accessors[prim.attributes.at("POSITION")].count);
+      }
+    ++complete;
+  }
+  CHECK(complete >= 1);
+  CHECK_MESSAGE(complete < kFiles, "every file finished before SIGINT arrived: the test proved nothing");
+  MESSAGE(complete << " of " << kFiles << " files complete when SIGINT arrived");
+  fs::remove_all(dir);
+}

@@ -1,6 +1,7 @@
 #include "bake/light_vertices.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "scene/material.h"
 
@@ -28,6 +29,15 @@ void accumulate_light(const PreparedLight<double>& light, const ShadeOptions& op
         }
       },
       light.kernel);
+}
+
+// Double light to the float output, saturating at the largest float so an over-lit vertex stays
+// the brightest rather than becoming Inf (and later black in an encoder that drops non-finite
+// values). Inputs are finite and >= 0 by construction of the kernels.
+Vec3f to_output(const Vec3d& c) {
+  constexpr double kMax = std::numeric_limits<float>::max();
+  return {static_cast<float>(std::min(c.x, kMax)), static_cast<float>(std::min(c.y, kMax)),
+          static_cast<float>(std::min(c.z, kMax))};
 }
 
 }  // namespace
@@ -67,8 +77,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         accumulate_light(plan.lights[li], options, prim, eye, shininess, static_cast<long>(begin), static_cast<long>(end),
                          diffuse.data(), options.with_specular ? specular.data() : nullptr);
       for (std::size_t v = begin; v < end; ++v) {
-        result.diffuse[v] = static_cast<Vec3f>(diffuse[v - begin]);
-        if (options.with_specular) result.specular[v] = static_cast<Vec3f>(specular[v - begin]);
+        result.diffuse[v] = to_output(diffuse[v - begin]);
+        if (options.with_specular) result.specular[v] = to_output(specular[v - begin]);
       }
       done += end - begin;
       if (request.progress) request.progress(done, total);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -86,7 +87,8 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
       for (std::size_t v = 0; v < n; ++v)
         for (int ch = 0; ch < 4; ++ch) {
           const double x = rgba[v][ch];
-          values[4 * v + ch] = std::isfinite(x) && x > 0 ? static_cast<float>(x) : 0.0f;
+          // NaN and negatives become 0; values beyond the float range saturate.
+          values[4 * v + ch] = x > 0 ? static_cast<float>(std::min(x, double(std::numeric_limits<float>::max()))) : 0.0f;
         }
       append_aligned(buffer.data, values.data(), values.size() * sizeof(float));
       byte_length = values.size() * sizeof(float);

@@ -34,6 +34,7 @@ struct BakeArgs {
   bool no_unlit = false;
   bool no_file_lights = false;
   bool quiet = false;
+  bool explain = false;
   std::size_t max_vertices = SceneLimits{}.max_vertices;
 };
 
@@ -76,6 +77,13 @@ BakeFileOptions file_options(const BakeArgs& args) {
   return o;
 }
 
+// --explain: the scene plan and where the time went, on stdout.
+void print_explain(const std::string& input, const BakeFileResult& r) {
+  std::printf("%s\n%s", input.c_str(), r.plan.c_str());
+  std::printf("time: load %.3f s, plan %.3f s, light %.3f s, encode %.3f s, write %.3f s\n", r.seconds.load,
+              r.seconds.plan, r.seconds.light, r.seconds.encode, r.seconds.write);
+}
+
 void print_summary(const std::string& output, const BakeFileResult& r, const std::string& format) {
   std::fprintf(stderr, "baked %zu vertices, %zu lights, into %s (%s", r.report.vertices, r.lights, output.c_str(), format.c_str());
   if (format != "float")
@@ -103,10 +111,20 @@ int run_bake(const BakeArgs& args) {
   if (!batch) {
     Progress progress("lighting " + files[0].first, !args.quiet);
     options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
-    const BakeFileResult r = bake_file(files[0].first, args.output, options);
-    progress.finish();
-    for (const auto& w : r.warnings) print_warning(w);
-    if (!args.quiet) print_summary(args.output, r, args.color_format);
+    try {
+      const BakeFileResult r = bake_file(files[0].first, args.output, options);
+      progress.finish();
+      for (const auto& w : r.warnings) print_warning(w);
+      if (args.explain) print_explain(files[0].first, r);
+      if (!args.quiet) print_summary(args.output, r, args.color_format);
+    } catch (const InputError&) {
+      progress.finish();
+      if (g_interrupted.load()) {
+        print_error(files[0].first + ": interrupted; no output written");
+        return 130;
+      }
+      throw;
+    }
     return 0;
   }
 
@@ -124,6 +142,7 @@ int run_bake(const BakeArgs& args) {
       const BakeFileResult r = bake_file(input, output.string(), options);
       progress.finish();
       for (const auto& w : r.warnings) print_warning(w);
+      if (args.explain) print_explain(input, r);
     } catch (const InputError& e) {
       progress.finish();
       print_error(e.what());
@@ -168,6 +187,8 @@ Runner add_bake_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
   cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
+  cmd->add_flag("--explain", args->explain,
+                "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
   cmd->add_option("--max-vertices", args->max_vertices,
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")

@@ -1,11 +1,13 @@
 // vlit render IN --lights LIGHTS.json -o OUT.png [--width W --height H] [--samples N] ...
 // Lights every vertex (diffuse and specular towards the camera), then rasterizes with Gouraud
 // shading: vertex colour = kd x diffuse light + ks x specular light.
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 
 #include "bake/light_vertices.h"
 #include "cli/commands.h"
+#include "cli/specular_option.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
@@ -22,6 +24,8 @@ struct RenderArgs {
   std::vector<double> background{0, 0, 0};
   bool cull_back_faces = false;
   bool quiet = false;
+  bool explain = false;
+  std::string specular = "peak";
   bool no_file_lights = false;
   std::size_t max_vertices = SceneLimits{}.max_vertices;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
@@ -45,6 +49,10 @@ raster::Camera to_raster_camera(const SceneCamera& c) {
 }
 
 int run_render(const RenderArgs& args) {
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const SpecularOptions specular = parse_specular(args.specular);
+  auto t = Clock::now();
   if (std::uint64_t(args.width) * std::uint64_t(args.height) > args.max_pixels)
     throw InputError(args.output, std::to_string(args.width) + " x " + std::to_string(args.height) +
                                       " pixels exceed the limit of " + std::to_string(args.max_pixels) +
@@ -53,6 +61,7 @@ int run_render(const RenderArgs& args) {
   LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
   for (const auto& w : loaded.warnings) print_warning(w);
   const Scene& scene = loaded.scene;
+  const double load_seconds = since(t);
   if (scene.lights.empty()) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
 
   raster::RenderOptions options;
@@ -79,8 +88,15 @@ int run_render(const RenderArgs& args) {
   LightingRequest request;
   request.eye = Vec3d{camera.world_from_camera.m[0][3], camera.world_from_camera.m[1][3], camera.world_from_camera.m[2][3]};
   request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
-  const auto light = light_scene_vertices(scene, request);
+  request.shade.specular = specular;
+  t = Clock::now();
+  const ScenePlan plan = plan_lighting(scene, request);
+  const double plan_seconds = since(t);
+  t = Clock::now();
+  const auto light = light_scene_vertices(scene, plan, request);
+  const double light_seconds = since(t);
   progress.finish();
+  t = Clock::now();
 
   std::vector<raster::DrawMesh> meshes;
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
@@ -101,9 +117,16 @@ int run_render(const RenderArgs& args) {
     meshes.push_back(std::move(mesh));
   }
   const raster::Image image = raster::render(meshes, camera, options);
+  const double raster_seconds = since(t);
+  t = Clock::now();
   const std::vector<uint8_t> rgb8 = raster::encode_srgb8(image, static_cast<float>(args.exposure));
   std::string error;
   if (!raster::write_png(args.output, image.width, image.height, rgb8, &error)) throw InputError(args.output, error);
+  if (args.explain) {
+    std::printf("%s\n%s", args.input.c_str(), describe(plan, scene).c_str());
+    std::printf("time: load %.3f s, plan %.3f s, light %.3f s, rasterize %.3f s, encode+write %.3f s\n", load_seconds,
+                plan_seconds, light_seconds, raster_seconds, since(t));
+  }
   if (!args.quiet)
     std::fprintf(stderr, "rendered %zu triangles, %dx%d, %d samples per pixel, into %s\n",
                  [&] { std::size_t n = 0; for (const auto& m : meshes) n += m.indices.size() / 3; return n; }(),
@@ -127,6 +150,10 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
   cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
+  cmd->add_option("--specular", args->specular,
+                  "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
+  cmd->add_flag("--explain", args->explain,
+                "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
   cmd->add_option("--max-vertices", args->max_vertices,
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+
+#include "core/input_error.h"
 
 namespace vlit {
 namespace {
@@ -102,7 +105,11 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
       plan.skipped.push_back("light " + l.name + ": zero intensity or colour");
       continue;
     }
-    plan.lights.push_back(prepare_light<double>(l));
+    try {
+      plan.lights.push_back(prepare_light<double>(l));
+    } catch (const std::invalid_argument& e) {  // a light the kernel cannot use: name it
+      throw InputError(l.name, e.what());
+    }
     plan.source_of_light.push_back(li);
     kept.push_back(&l);
   }

@@ -186,3 +186,22 @@ TEST_CASE("bake of a mesh file is refused with a clear error") {
   CHECK(r.err.find("needs a .gltf or .glb input") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "out.glb"));
 }
+
+TEST_CASE("--explain prints the plan and per-stage times") {
+  const auto dir = vlit::test::temp_dir("cli-explain");
+  const auto r = run_command(kVlit + " bake " + q(kDemo) + " --lights " + q(kDemoLights) + " -o " +
+                             q((dir / "out.glb").string()) + " --explain -q");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  CHECK(r.out.find("plan: specular none") != std::string::npos);  // a bake is diffuse only
+  CHECK(r.out.find("area contour integral (eq. 9)") != std::string::npos);
+  CHECK(r.out.find("linear closed form (eq. 4)") != std::string::npos);
+  CHECK(r.out.find("time: load") != std::string::npos);
+  const auto render = run_command(kVlit + " render " + q(kDemo) + " --lights " + q(kDemoLights) + " -o " +
+                                  q((dir / "out.png").string()) + " --width 32 --height 24 --explain -q --specular exact");
+  REQUIRE_MESSAGE(render.exit_code == 0, render.err);
+  CHECK(render.out.find("plan: specular exact") != std::string::npos);
+  CHECK(render.out.find("rasterize") != std::string::npos);
+  const auto bad = run_command(kVlit + " render " + q(kDemo) + " -o " + q((dir / "x.png").string()) + " --specular shiny");
+  CHECK(bad.exit_code == 1);
+  CHECK(bad.err.find("--specular: expected peak, neighborhood:K, exact or none") != std::string::npos);
+}

@@ -10,22 +10,22 @@ namespace {
 
 // Adds one light's contribution to a chunk of vertices. The light model is resolved once per
 // chunk (std::visit outside the vertex loop), so the inner loop has no dispatch.
-void accumulate_light(const PreparedLight<double>& light, const ShadeOptions& options, const ScenePrimitive& prim,
-                      const Vec3d& eye, double shininess, long begin, long end, Vec3d* diffuse, Vec3d* specular) {
+void accumulate_light(const PreparedLight<double>& light, const ShadeOptions& options,
+                      const ShadingPoint<double>* points, long count, Vec3d* diffuse, Vec3d* specular) {
   const bool windowed = light.range > 0;
   std::visit(
       [&](const auto& kernel) {
 #pragma omp parallel for schedule(static)
-        for (long v = begin; v < end; ++v) {
-          const ShadingPoint<double> sp = make_shading_point(prim.positions[v], prim.normals[v], eye, shininess);
+        for (long v = 0; v < count; ++v) {
+          const ShadingPoint<double>& sp = points[v];
           Response<double> r = shade_kernel<double>(kernel, sp, options);
           if (windowed) {
             const double window = range_window(light, sp.p);
             r.diffuse *= window;
             r.specular *= window;
           }
-          diffuse[v - begin] += light.radiance * r.diffuse;
-          if (specular) specular[v - begin] += light.radiance * r.specular;
+          diffuse[v] += light.radiance * r.diffuse;
+          if (specular) specular[v] += light.radiance * r.specular;
         }
       },
       light.kernel);
@@ -61,6 +61,7 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
   std::size_t done = 0;
   constexpr std::size_t kChunk = 1 << 14;  // progress and cancellation granularity
   std::vector<Vec3d> diffuse(kChunk), specular(options.with_specular ? kChunk : 0);
+  std::vector<ShadingPoint<double>> points(kChunk);  // per vertex, computed once for all lights
   for (std::size_t pi = 0; pi < scene.primitives.size(); ++pi) {
     const ScenePrimitive& prim = scene.primitives[pi];
     const double shininess = phong_from_metallic_roughness(scene.material_of(prim)).shininess;
@@ -71,11 +72,17 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
     for (std::size_t begin = 0; begin < n; begin += kChunk) {
       if (request.cancel && request.cancel->load()) return out;
       const std::size_t end = std::min(n, begin + kChunk);
+      const long count = static_cast<long>(end - begin);
       std::fill(diffuse.begin(), diffuse.end(), Vec3d{});
       std::fill(specular.begin(), specular.end(), Vec3d{});
+      if (!plan.lights_of_primitive[pi].empty()) {
+#pragma omp parallel for schedule(static)
+        for (long v = 0; v < count; ++v)
+          points[v] = make_shading_point(prim.positions[begin + v], prim.normals[begin + v], eye, shininess);
+      }
       for (int li : plan.lights_of_primitive[pi])
-        accumulate_light(plan.lights[li], options, prim, eye, shininess, static_cast<long>(begin), static_cast<long>(end),
-                         diffuse.data(), options.with_specular ? specular.data() : nullptr);
+        accumulate_light(plan.lights[li], options, points.data(), count, diffuse.data(),
+                         options.with_specular ? specular.data() : nullptr);
       for (std::size_t v = begin; v < end; ++v) {
         result.diffuse[v] = to_output(diffuse[v - begin]);
         if (options.with_specular) result.specular[v] = to_output(specular[v - begin]);

@@ -30,6 +30,7 @@
 #include <tiny_gltf.h>
 
 #include "core/vec3.h"
+#include "gltf_scene_writer.h"
 #include "io/atomic_write.h"
 
 namespace vlit {
@@ -40,18 +41,6 @@ constexpr double kInch = 0.0254;
 
 // ---------------------------------------------------------------------------------------------
 // Geometry: indexed triangle meshes with per-vertex normals.
-
-struct MeshData {
-  std::vector<Vec3d> positions, normals;
-  std::vector<std::uint32_t> indices;
-
-  void append(const MeshData& other) {
-    const auto base = static_cast<std::uint32_t>(positions.size());
-    positions.insert(positions.end(), other.positions.begin(), other.positions.end());
-    normals.insert(normals.end(), other.normals.begin(), other.normals.end());
-    for (auto i : other.indices) indices.push_back(base + i);
-  }
-};
 
 struct SurfacePoint {
   Vec3d position, normal;
@@ -201,165 +190,6 @@ ProfilePoint pin_profile(double s) {
   const double head = kPinKnots[3].diameter_in / 2;
   return {head * std::cos(a) * kInch, (kPinHeadTopIn + (kPinHeightIn - kPinHeadTopIn) * std::sin(a)) * kInch};
 }
-
-// ---------------------------------------------------------------------------------------------
-// glTF output.
-
-struct MaterialSpec {
-  std::string name;
-  std::array<double, 3> base_color;
-  double roughness, metallic;
-};
-
-class GltfSceneWriter {
- public:
-  GltfSceneWriter(const std::string& generator) {
-    model_.asset.version = "2.0";
-    model_.asset.generator = generator;
-    model_.buffers.resize(1);
-    model_.scenes.resize(1);
-    model_.defaultScene = 0;
-  }
-
-  int material(const MaterialSpec& spec) {
-    tinygltf::Material m;
-    m.name = spec.name;
-    m.pbrMetallicRoughness.baseColorFactor = {spec.base_color[0], spec.base_color[1], spec.base_color[2], 1};
-    m.pbrMetallicRoughness.metallicFactor = spec.metallic;
-    m.pbrMetallicRoughness.roughnessFactor = spec.roughness;
-    model_.materials.push_back(m);
-    return static_cast<int>(model_.materials.size()) - 1;
-  }
-
-  // A mesh with one primitive per (geometry, material) part.
-  int mesh(const std::string& name, const std::vector<std::pair<MeshData, int>>& parts) {
-    tinygltf::Mesh mesh;
-    mesh.name = name;
-    for (const auto& [data, material] : parts) {
-      tinygltf::Primitive prim;
-      prim.mode = TINYGLTF_MODE_TRIANGLES;
-      prim.attributes["POSITION"] = vec3_accessor(data.positions, true);
-      prim.attributes["NORMAL"] = vec3_accessor(data.normals, false);
-      tinygltf::Accessor idx;
-      idx.bufferView = view(data.indices.data(), data.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-      idx.componentType = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-      idx.type = TINYGLTF_TYPE_SCALAR;
-      idx.count = data.indices.size();
-      model_.accessors.push_back(idx);
-      prim.indices = static_cast<int>(model_.accessors.size()) - 1;
-      prim.material = material;
-      mesh.primitives.push_back(prim);
-    }
-    model_.meshes.push_back(mesh);
-    return static_cast<int>(model_.meshes.size()) - 1;
-  }
-
-  void node(const std::string& name, int mesh, Vec3d translation = {}) {
-    tinygltf::Node n;
-    n.name = name;
-    n.mesh = mesh;
-    if (!(translation == Vec3d{})) n.translation = {translation.x, translation.y, translation.z};
-    add_root(n);
-  }
-
-  // A perspective camera at eye looking at target, +Y up (glTF cameras look down their local -Z).
-  void camera(Vec3d eye, Vec3d target, double yfov, double aspect) {
-    tinygltf::Camera c;
-    c.type = "perspective";
-    c.perspective.yfov = yfov;
-    c.perspective.aspectRatio = aspect;
-    c.perspective.znear = 0.05;
-    c.perspective.zfar = 50;  // finite: tinygltf would otherwise write the invalid zfar = 0
-    model_.cameras.push_back(c);
-    const Vec3d back = normalize(eye - target);
-    const Vec3d right = normalize(cross(Vec3d{0, 1, 0}, back));
-    const Vec3d up = cross(back, right);
-    tinygltf::Node n;
-    n.name = "camera";
-    n.camera = static_cast<int>(model_.cameras.size()) - 1;
-    n.translation = {eye.x, eye.y, eye.z};
-    n.rotation = quaternion_from_columns(right, up, back);
-    add_root(n);
-  }
-
-  bool write(const std::string& path) {
-    tinygltf::TinyGLTF writer;
-    std::ostringstream out;
-    if (!writer.WriteGltfSceneToStream(&model_, out, false, true)) {
-      std::fprintf(stderr, "%s: cannot serialize the scene\n", path.c_str());
-      return false;
-    }
-    write_file_atomically(path, out.str());
-    return true;
-  }
-
- private:
-  void add_root(const tinygltf::Node& n) {
-    model_.nodes.push_back(n);
-    model_.scenes[0].nodes.push_back(static_cast<int>(model_.nodes.size()) - 1);
-  }
-
-  int view(const void* data, std::size_t bytes, int target) {
-    auto& buffer = model_.buffers[0].data;
-    while (buffer.size() % 4) buffer.push_back(0);
-    tinygltf::BufferView v;
-    v.buffer = 0;
-    v.byteOffset = buffer.size();
-    v.byteLength = bytes;
-    v.target = target;
-    const auto* b = static_cast<const unsigned char*>(data);
-    buffer.insert(buffer.end(), b, b + bytes);
-    model_.bufferViews.push_back(v);
-    return static_cast<int>(model_.bufferViews.size()) - 1;
-  }
-
-  int vec3_accessor(const std::vector<Vec3d>& values, bool with_bounds) {
-    std::vector<float> f;
-    std::vector<double> lo(3, 1e30), hi(3, -1e30);
-    for (const Vec3d& v : values)
-      for (int c = 0; c < 3; ++c) {
-        const float x = static_cast<float>(v[c]);
-        f.push_back(x);
-        lo[c] = std::min<double>(lo[c], x);
-        hi[c] = std::max<double>(hi[c], x);
-      }
-    tinygltf::Accessor acc;
-    acc.bufferView = view(f.data(), f.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER);
-    acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    acc.type = TINYGLTF_TYPE_VEC3;
-    acc.count = values.size();
-    if (with_bounds) {
-      acc.minValues = lo;
-      acc.maxValues = hi;
-    }
-    model_.accessors.push_back(acc);
-    return static_cast<int>(model_.accessors.size()) - 1;
-  }
-
-  // The unit quaternion [x, y, z, w] of the rotation whose matrix has columns x, y, z
-  // (Shepperd's method: the largest of the four candidates keeps it well conditioned).
-  static std::vector<double> quaternion_from_columns(Vec3d x, Vec3d y, Vec3d z) {
-    const double m00 = x.x, m10 = x.y, m20 = x.z, m01 = y.x, m11 = y.y, m21 = y.z, m02 = z.x, m12 = z.y, m22 = z.z;
-    const double trace = m00 + m11 + m22;
-    double qx, qy, qz, qw;
-    if (trace > 0) {
-      const double s = 2 * std::sqrt(1 + trace);
-      qw = s / 4; qx = (m21 - m12) / s; qy = (m02 - m20) / s; qz = (m10 - m01) / s;
-    } else if (m00 > m11 && m00 > m22) {
-      const double s = 2 * std::sqrt(1 + m00 - m11 - m22);
-      qw = (m21 - m12) / s; qx = s / 4; qy = (m01 + m10) / s; qz = (m02 + m20) / s;
-    } else if (m11 > m22) {
-      const double s = 2 * std::sqrt(1 + m11 - m00 - m22);
-      qw = (m02 - m20) / s; qx = (m01 + m10) / s; qy = s / 4; qz = (m12 + m21) / s;
-    } else {
-      const double s = 2 * std::sqrt(1 + m22 - m00 - m11);
-      qw = (m10 - m01) / s; qx = (m02 + m20) / s; qy = (m12 + m21) / s; qz = s / 4;
-    }
-    return {qx, qy, qz, qw};
-  }
-
-  tinygltf::Model model_;
-};
 
 // ---------------------------------------------------------------------------------------------
 // LIGHTS.json output (docs/lights-json.md), written by hand so the bytes are stable.

@@ -48,7 +48,9 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
 
   t = Clock::now();
   tinygltf::Model model = std::move(loaded.gltf->model);
-  result.report = bake_vertex_colors(model, loaded.scene, light, options.encode);
+  BakeOptions encode = options.encode;
+  encode.source = input;
+  result.report = bake_vertex_colors(model, loaded.scene, light, encode);
   result.seconds.encode = since(t);
   if (result.report.replaced_attributes > 0)
     result.warnings.push_back(input + ": " + (options.encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") +

@@ -43,7 +43,7 @@ void append_aligned(std::vector<unsigned char>& data, const void* bytes, std::si
 
 BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const std::vector<VertexLight>& light,
                               const BakeOptions& options) {
-  const std::string file = "<model>";
+  const std::string& file = options.source;
   BakeReport report;
   const auto mesh_of_node = unshare_meshes(model, scene, report.duplicated_meshes);
 

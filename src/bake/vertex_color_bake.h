@@ -28,6 +28,7 @@ struct BakeOptions {
   ColorFormat format = ColorFormat::kUnorm16;
   double exposure = 1;      // multiplies the light before encoding
   bool mark_unlit = true;   // add KHR_materials_unlit so viewers do not light the asset again
+  std::string source = "<model>";  // the input's name, for errors about its existing colours
 };
 
 struct BakeReport {

@@ -58,18 +58,6 @@ DiffuseCheck check_diffuse(const char* name, uint64_t seed, const AreaLight<doub
 
 std::vector<std::vector<Vec3d>> one_piece(const std::vector<Vec3d>& p) { return {p}; }
 
-AreaLight<double> light_of(std::vector<Vec3d> p, bool two_sided = false) {
-  AreaLight<double> l;
-  l.polygon = std::move(p);
-  l.two_sided = two_sided;
-  return l;
-}
-
-// A square of half-side s in the plane z = z0, emitting toward -z (CCW seen from below).
-std::vector<Vec3d> square_down(double s, double z0, double cx = 0, double cy = 0) {
-  return {{cx - s, cy - s, z0}, {cx - s, cy + s, z0}, {cx + s, cy + s, z0}, {cx + s, cy - s, z0}};
-}
-
 ShadingPoint<double> point_up(Vec3d p, Vec3d n = {0, 0, 1}) { return {p, normalize(n), normalize(n), 1}; }
 
 }  // namespace

@@ -16,17 +16,6 @@ constexpr double kPeakAngleBar = 1e-9;
 constexpr double kExactBar = 1e-7;        // kernel tolerance 1e-9 on its (pessimistic) 4x4 estimate
 constexpr double kFloatBar = 1e-5;
 
-AreaLight<double> light_of(std::vector<Vec3d> p, bool two_sided = false) {
-  AreaLight<double> l;
-  l.polygon = std::move(p);
-  l.two_sided = two_sided;
-  return l;
-}
-
-std::vector<Vec3d> square_down(double s, double z0, double cx = 0, double cy = 0) {
-  return {{cx - s, cy - s, z0}, {cx - s, cy + s, z0}, {cx + s, cy + s, z0}, {cx + s, cy - s, z0}};
-}
-
 // Reference peak: smallest angle between Rv and a direction toward the horizon-clipped (convex)
 // light, by (a) the ray/plane hit inside the clipped polygon, (b) on each clipped edge, 400
 // samples plus the sidebar's stationary point t = (BD - 2CE) / (BE - 2AD) (Picott, linear-light

@@ -75,6 +75,18 @@ inline std::string describe(const std::vector<Vec3d>& poly, const ShadingPoint<d
   return s.str();
 }
 
+inline AreaLight<double> light_of(std::vector<Vec3d> p, bool two_sided = false) {
+  AreaLight<double> l;
+  l.polygon = std::move(p);
+  l.two_sided = two_sided;
+  return l;
+}
+
+// A square of half-side s in the plane z = z0, emitting toward -z (CCW seen from below).
+inline std::vector<Vec3d> square_down(double s, double z0, double cx = 0, double cy = 0) {
+  return {{cx - s, cy - s, z0}, {cx - s, cy + s, z0}, {cx + s, cy + s, z0}, {cx + s, cy - s, z0}};
+}
+
 inline ShadingPoint<float> to_float(const ShadingPoint<double>& sp) {
   return {static_cast<Vec3f>(sp.p), static_cast<Vec3f>(sp.n), static_cast<Vec3f>(sp.rv), static_cast<float>(sp.shininess)};
 }

@@ -1,0 +1,128 @@
+#include "shadow/area_visibility.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vlit {
+namespace {
+
+// Fraction of the light-to-P height kept free next to the light's plane and next to P.
+constexpr double kLightPlaneMargin = 1e-7;
+constexpr double kApexMargin = 1e-9;
+constexpr double kEdgeOn = 1e-12;
+constexpr double kPieceAreaFloor = 1e-12;
+
+struct Slab {
+  HalfSpace beyond_light;  // height above the light's plane >= margin
+  HalfSpace before_p;      // height <= h (1 - apex margin)
+};
+
+Slab slab_of(const PreparedAreaLight<double>& light, const AreaView<double>& view, const Vec3d& p) {
+  const double margin = kLightPlaneMargin * (view.height + light.radius);
+  Slab s;
+  s.beyond_light = {view.normal, light.center + view.normal * margin};
+  s.before_p = {-view.normal, p - view.normal * (view.height * kApexMargin)};
+  return s;
+}
+
+double twice_area(const Vec3d* d, int n) {
+  Vec3d a{};
+  for (int i = 0; i < n; ++i) a += cross(d[i], d[(i + 1) % n]);
+  return length(a);
+}
+
+}  // namespace
+
+ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const AreaView<double>& view,
+                                const ClipPolygon<double>& horizon_clipped, const Vec3d& p) {
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (int i = 0; i < horizon_clipped.count; ++i) {
+    const double x = dot(view.u, horizon_clipped.d[i]), y = dot(view.v, horizon_clipped.d[i]);
+    x0 = std::min(x0, x); x1 = std::max(x1, x);
+    y0 = std::min(y0, y); y1 = std::max(y1, y);
+  }
+  const Vec3d corner[4] = {light.center + view.u * x0 + view.v * y0, light.center + view.u * x1 + view.v * y0,
+                           light.center + view.u * x1 + view.v * y1, light.center + view.u * x0 + view.v * y1};
+  const Vec3d middle = light.center + view.u * (0.5 * (x0 + x1)) + view.v * (0.5 * (y0 + y1));
+  ConvexVolume volume;
+  volume.box.grow(p);
+  for (const Vec3d& c : corner) volume.box.grow(c);
+  for (int k = 0; k < 4; ++k) {
+    Vec3d normal = cross(corner[k] - p, corner[(k + 1) % 4] - p);
+    if (dot(normal, middle - p) < 0) normal = -normal;
+    if (length_squared(normal) > 0) volume.planes.push_back({normal, p});
+  }
+  const Slab slab = slab_of(light, view, p);
+  volume.planes.push_back(slab.beyond_light);
+  volume.planes.push_back(slab.before_p);
+  return volume;
+}
+
+AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const AreaView<double>& view,
+                                   const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
+                                   const OccluderBvh& occluders, AreaShadowScratch& scratch) {
+  const ConvexVolume volume = area_shadow_volume(light, view, horizon_clipped, p);
+  occluders.triangles_in_volume(volume, p, scratch.candidates);
+  if (scratch.candidates.empty()) return AreaVisibility::kUnoccluded;
+
+  const Slab slab = slab_of(light, view, p);
+  const std::vector<HalfSpace> slab_planes{slab.beyond_light, slab.before_p};
+  const double area_floor = kPieceAreaFloor * 2 * light.area;
+  LightPieces& pieces = scratch.pieces;
+  LightPieces& next = scratch.next;
+  pieces.clear();
+  pieces.add(horizon_clipped.d.data(), horizon_clipped.count);
+
+  ClipPolygon<double> rest, outside, tmp;
+  std::array<Vec3d, 16> cone_normal;
+  for (std::uint32_t index : scratch.candidates) {
+    if (pieces.size() == 0) break;  // fully hidden
+    const auto& tri = occluders.triangles().corners[index];
+    const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
+    const double side = dot(n_tri, tri[0] - p);
+    if (!(std::abs(side) > kEdgeOn * length(n_tri) * length(tri[0] - p))) continue;  // edge-on or zero area
+    const double sigma = side > 0 ? 1.0 : -1.0;
+    const SmallPolygon part = clip_triangle(tri, slab_planes);
+    if (part.count < 3) continue;
+    // One plane through P per edge of the clipped occluder; inside the cone: dot(k, x - P) >= 0.
+    int planes = 0;
+    for (int j = 0; j < part.count; ++j) {
+      const Vec3d a = part.p[j] - p, b = part.p[(j + 1) % part.count] - p;
+      const Vec3d k = cross(a, b) * sigma;
+      if (length(k) > 1e-14 * length(a) * length(b)) cone_normal[planes++] = k;
+    }
+    if (planes < 3) continue;
+    next.clear();
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const Vec3d* d = pieces.points.data() + pieces.start[i];
+      const int n = pieces.start[i + 1] - pieces.start[i];
+      // A piece entirely outside one plane of the cone is untouched.
+      bool untouched = false;
+      for (int j = 0; j < planes && !untouched; ++j) {
+        const double offset = dot(cone_normal[j], view.D);
+        bool all_out = true;
+        for (int v = 0; v < n && all_out; ++v) all_out = dot(cone_normal[j], d[v]) + offset <= 0;
+        untouched = all_out;
+      }
+      if (untouched) {
+        next.add(d, n);
+        continue;
+      }
+      rest.count = n;
+      std::copy(d, d + n, rest.d.begin());
+      for (int j = 0; j < planes && rest.count >= 3; ++j) {
+        const double offset = dot(cone_normal[j], view.D);
+        clip_halfspace(rest.d.data(), rest.count, -cone_normal[j], -offset, outside);
+        if (outside.count >= 3 && twice_area(outside.d.data(), outside.count) > area_floor)
+          next.add(outside.d.data(), outside.count);
+        clip_halfspace(rest.d.data(), rest.count, cone_normal[j], offset, tmp);
+        rest = tmp;
+      }
+      // What is left in `rest` is inside the cone: hidden.
+    }
+    std::swap(pieces, next);
+  }
+  return AreaVisibility::kPieces;
+}
+
+}  // namespace vlit

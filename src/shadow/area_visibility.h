@@ -1,0 +1,66 @@
+// Which part of an area light a point P sees (Picott 1992 eq. 10: the hidden part of the light
+// contributes nothing, so clip the light against the silhouettes of what hides it).
+//
+// Method. The light, clipped to P's horizon (area_polygon.h), is cut into convex-or-chain
+// pieces that no occluder hides:
+//  1. query the occluders that reach into the pyramid from P over the light's bounding
+//     rectangle, between the light's plane and P (OccluderBvh::triangles_in_volume);
+//  2. clip each occluder triangle to the slab strictly between the light's plane and P
+//     (occluder parts beyond the light or behind P hide nothing), and skip it if P sees it
+//     edge-on (it hides a set of zero area);
+//  3. subtract the cone from P over the clipped occluder from every piece: the cone is convex,
+//     bounded by one plane through P per occluder edge, so "piece minus cone" is the union of
+//     the parts of the piece outside each plane in turn (Sutherland-Hodgman cuts only, no
+//     general polygon boolean). A plane through P and an occluder edge meets the light's plane
+//     in the line of that edge's central projection from P, so this is exactly "project the
+//     occluder from P onto the light's plane and subtract the union of the projections".
+// Watertightness: the plane of an edge shared by two occluder triangles is formed as
+// ±cross(x_j - P, x_k - P) from the same corners, so both triangles use bit-identical
+// (negated) planes and the cut points on the light are the same: no light leaks between
+// them (tests/shadow/area_shadow_test.cpp "watertight occluder never leaks").
+// Degenerate occluders (zero area, edge-on, zero-length edges, coincident with the light's
+// plane) hide nothing; pieces of area below 1e-12 of the light's are dropped.
+// Occluder parts within 1e-7 (h + light radius) of the light's plane are ignored: a fixture
+// mesh lying on the light must not hide it (docs/shadows.md).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "area_polygon.h"
+#include "shadow/occluder_bvh.h"
+
+namespace vlit {
+
+// Pieces of a light, relative to the light's centre c, each a closed polygon or chain.
+struct LightPieces {
+  std::vector<Vec3d> points;
+  std::vector<int> start;  // piece i is points[start[i] .. start[i+1]); start has size() + 1 entries
+  std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
+  void clear() { points.clear(); start.assign(1, 0); }
+  void add(const Vec3d* p, int n) {
+    points.insert(points.end(), p, p + n);
+    start.push_back(static_cast<int>(points.size()));
+  }
+};
+
+struct AreaShadowScratch {
+  std::vector<std::uint32_t> candidates;
+  LightPieces pieces, next;
+};
+
+enum class AreaVisibility {
+  kUnoccluded,  // no occluder reaches between P and the light: use the light as is
+  kPieces,      // scratch.pieces holds the visible part (possibly empty: fully hidden)
+};
+
+// horizon_clipped: the light clipped to P's horizon (count >= 3). P is the ShadingPoint's p.
+AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const AreaView<double>& view,
+                                   const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
+                                   const OccluderBvh& occluders, AreaShadowScratch& scratch);
+
+// The volume that the BVH is asked about (exposed for tests and the plan).
+ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const AreaView<double>& view,
+                                const ClipPolygon<double>& horizon_clipped, const Vec3d& p);
+
+}  // namespace vlit

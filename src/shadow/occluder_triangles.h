@@ -1,0 +1,37 @@
+// The triangles that can hide a light: every triangle of the scene in world space, each with an
+// id naming where it came from (scene primitive, triangle index), so results can be traced back
+// and compared between the BVH and the brute-force path.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/vec3.h"
+#include "scene/scene.h"
+
+namespace vlit {
+
+struct OccluderId {
+  std::uint32_t primitive = 0;  // index into Scene::primitives
+  std::uint32_t triangle = 0;   // triangle index within that primitive
+};
+
+struct OccluderTriangles {
+  std::vector<std::array<Vec3d, 3>> corners;  // world space
+  std::vector<OccluderId> ids;                // parallel to corners
+  std::size_t size() const { return corners.size(); }
+};
+
+// Every triangle of every primitive (transforms are already applied in a Scene). Triangles with
+// an out-of-range index or a non-finite corner are left out (they hide nothing).
+OccluderTriangles occluders_of(const Scene& scene);
+
+// True if one corner of the triangle is exactly p: a vertex is never shadowed by the triangles
+// that contain it, including triangles of other primitives through the same position (split
+// normals, seams), so a receiving mesh has no self-shadowing acne at its own vertices.
+inline bool touches(const std::array<Vec3d, 3>& tri, const Vec3d& p) {
+  return tri[0] == p || tri[1] == p || tri[2] == p;
+}
+
+}  // namespace vlit

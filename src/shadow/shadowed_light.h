@@ -1,0 +1,36 @@
+// One light at one point with its shadows: the existing kernels (shaders_cpu/) evaluated on the
+// part of the light the point sees (Picott 1992 eq. 10). Unit intensity, kd = ks = 1, without
+// the glTF range window (as shade_kernel in src/shading/prepared_light.h).
+//
+// Per model:
+// - point, spot: one shadow ray from P to the light's position;
+// - directional: one shadow ray from P against the light, past every occluder;
+// - linear: the visible sub-segments [t_a, t_b] (linear_visibility.h). Intensity is per unit of
+//   t (docs/lights-json.md), so a sub-segment shaded as a light of its own is scaled by
+//   (t_b - t_a) to keep the same emission density: diffuse and exact specular sum over the
+//   pieces with that weight; the peak specular is the largest peak over the pieces (a maximum,
+//   not an integral); the neighbourhood specular is that of the piece holding the peak;
+// - area: the visible pieces of the light (area_visibility.h); diffuse and exact specular are
+//   sums over the pieces (both are integrals over the light: contour sums are additive over a
+//   partition), the peak is the largest peak over the pieces, the neighbourhood is the peak
+//   times the fraction of ring samples that reach any visible piece;
+// - disk: shadowed as its equal-area regular 64-gon (the disk kernel is a polygon bracket
+//   itself); unshadowed points use the disk kernel unchanged.
+// When no occluder reaches between P and the light the unshadowed kernel is called, so a light
+// nothing hides gives bit-identical results with shadows on or off.
+#pragma once
+
+#include "shading/prepared_light.h"
+#include "shadow/occluder_bvh.h"
+
+namespace vlit {
+
+template <class K>
+Response<double> shade_kernel_shadowed(const K& kernel, const ShadingPoint<double>& sp, const ShadeOptions& options,
+                                       const OccluderBvh& occluders);
+
+// Dispatching form, range window included (as shade() in prepared_light.h).
+Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
+                                const ShadeOptions& options, const OccluderBvh& occluders);
+
+}  // namespace vlit

@@ -1,0 +1,84 @@
+// The BVH against the brute-force path: identical answers for shadow rays, volume queries and
+// whole shadowed evaluations on a random triangle soup.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "shadow_test_util.h"
+#include "shadow/area_visibility.h"
+
+using namespace vlit;
+using namespace vlit::test;
+
+namespace {
+
+std::vector<Tri> random_soup(int count, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> pos(-3, 3), off(-0.4, 0.4), height(0.2, 2.8);
+  std::vector<Tri> tris;
+  for (int i = 0; i < count; ++i) {
+    const Vec3d c{pos(rng), pos(rng), height(rng)};
+    tris.push_back({c + Vec3d{off(rng), off(rng), off(rng)}, c + Vec3d{off(rng), off(rng), off(rng)},
+                    c + Vec3d{off(rng), off(rng), off(rng)}});
+  }
+  return tris;
+}
+
+}  // namespace
+
+TEST_CASE("BVH and brute force agree on shadow rays and volume queries") {
+  const std::vector<Tri> tris = random_soup(3000, 11);
+  const OccluderBvh bvh = make_bvh(tris), brute = make_bvh(tris, true);
+  CHECK(bvh.node_count() > 1);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> pos(-4, 4);
+  int blocked = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const Vec3d a{pos(rng), pos(rng), 0}, b{pos(rng), pos(rng), 3.5};
+    const bool x = bvh.segment_occluded(a, b, a), y = brute.segment_occluded(a, b, a);
+    CHECK(x == y);
+    blocked += x;
+  }
+  CHECK(blocked > 100);
+  CHECK(blocked < 1900);
+  const PreparedAreaLight<double> light = prepare_area_light(AreaLight<double>{square_light(1.5, 3), false});
+  std::vector<std::uint32_t> a, b;
+  std::size_t found = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Vec3d p{pos(rng), pos(rng), 0};
+    const AreaView<double> view = make_area_view(light, p);
+    ClipPolygon<double> horizon;
+    clip_to_horizon(light, view, Vec3d{0, 0, 1}, horizon);
+    const ConvexVolume volume = area_shadow_volume(light, view, horizon, p);
+    bvh.triangles_in_volume(volume, p, a);
+    brute.triangles_in_volume(volume, p, b);
+    CHECK(a == b);
+    found += a.size();
+  }
+  CHECK(found > 0);
+}
+
+TEST_CASE("shadowed lights are identical with the BVH on and off") {
+  const std::vector<Tri> tris = random_soup(400, 3);
+  const OccluderBvh bvh = make_bvh(tris), brute = make_bvh(tris, true);
+  std::vector<LightSource> lights{area_source(square_light(1.5, 3.2)), linear_source({-2, 0, 3.2}, {2, 0.5, 3.3}, 2)};
+  LightSource point;
+  point.position = {0.5, 0.5, 3.5};
+  lights.push_back(point);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> pos(-3, 3);
+  int partly = 0;
+  for (const LightSource& source : lights) {
+    const PreparedLight<double> light = prepare_light<double>(source);
+    for (int i = 0; i < 60; ++i) {
+      const ShadingPoint<double> sp = make_shading_point(Vec3d{pos(rng), pos(rng), 0}, Vec3d{0, 0, 1}, Vec3d{0, 0, 6}, 10.0);
+      const ShadeOptions o = options_with(SpecularMethod::kPeak);
+      const Response<double> x = shade_shadowed(light, sp, o, bvh), y = shade_shadowed(light, sp, o, brute);
+      CHECK(x.diffuse == y.diffuse);
+      CHECK(x.specular == y.specular);
+      const double open = shade(light, sp, o).diffuse;
+      partly += x.diffuse > 0 && x.diffuse < open;
+    }
+  }
+  CHECK(partly > 10);  // the comparison covered real penumbrae
+}

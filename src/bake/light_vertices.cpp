@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "scene/material.h"
+#include "shadow/shadowed_vertices.h"
 
 namespace vlit {
 namespace {
@@ -46,6 +47,7 @@ ScenePlan plan_lighting(const Scene& scene, const LightingRequest& request) {
   PlanOptions options;
   options.shade = request.shade;
   options.has_eye = request.eye.has_value();
+  options.shadows = request.shadows;
   return make_scene_plan(scene, options);
 }
 
@@ -62,6 +64,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
   constexpr std::size_t kChunk = 1 << 14;  // progress and cancellation granularity
   std::vector<Vec3d> diffuse(kChunk), specular(options.with_specular ? kChunk : 0);
   std::vector<ShadingPoint<double>> points(kChunk);  // per vertex, computed once for all lights
+  std::optional<OccluderBvh> occluders;  // built only when the plan shadows some pair
+  if (plan.needs_occluders) occluders.emplace(occluders_of(scene));
   for (std::size_t pi = 0; pi < scene.primitives.size(); ++pi) {
     const ScenePrimitive& prim = scene.primitives[pi];
     const double shininess = phong_from_metallic_roughness(scene.material_of(prim)).shininess;
@@ -80,9 +84,14 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         for (long v = 0; v < count; ++v)
           points[v] = make_shading_point(prim.positions[begin + v], prim.normals[begin + v], eye, shininess);
       }
-      for (int li : plan.lights_of_primitive[pi])
-        accumulate_light(plan.lights[li], options, points.data(), count, diffuse.data(),
-                         options.with_specular ? specular.data() : nullptr);
+      for (std::size_t k = 0; k < plan.lights_of_primitive[pi].size(); ++k) {
+        const PreparedLight<double>& light = plan.lights[plan.lights_of_primitive[pi][k]];
+        Vec3d* spec_out = options.with_specular ? specular.data() : nullptr;
+        if (occluders && plan.shadowed_of_primitive[pi][k])
+          accumulate_light_shadowed(light, options, points.data(), count, diffuse.data(), spec_out, *occluders);
+        else
+          accumulate_light(light, options, points.data(), count, diffuse.data(), spec_out);
+      }
       for (std::size_t v = begin; v < end; ++v) {
         result.diffuse[v] = to_output(diffuse[v - begin]);
         if (options.with_specular) result.specular[v] = to_output(specular[v - begin]);

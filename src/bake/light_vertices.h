@@ -22,6 +22,7 @@ struct VertexLight {
 struct LightingRequest {
   ShadeOptions shade;
   std::optional<Vec3d> eye;  // specular is evaluated only with an eye
+  bool shadows = false;      // --shadows: lights hidden by the scene's triangles (docs/shadows.md)
   // Called from the calling thread with (vertices done, vertices total); may be empty.
   std::function<void(std::size_t, std::size_t)> progress;
   // Polled between chunks of vertices: when true, lighting stops early (results incomplete).

@@ -35,6 +35,7 @@ struct BakeArgs {
   bool no_file_lights = false;
   bool quiet = false;
   bool explain = false;
+  std::string shadows = "off";
   std::size_t max_vertices = SceneLimits{}.max_vertices;
 };
 
@@ -67,6 +68,7 @@ BakeFileOptions file_options(const BakeArgs& args) {
   BakeFileOptions o;
   o.lights_path = args.lights;
   o.use_file_lights = !args.no_file_lights;
+  o.shadows = args.shadows == "on";
   o.encode.exposure = args.exposure;
   o.encode.mark_unlit = !args.no_unlit;
   o.encode.target = args.target;
@@ -187,6 +189,9 @@ Runner add_bake_command(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
   cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
+  cmd->add_option("--shadows", args->shadows,
+                  "on: lights are hidden by the scene's triangles (soft shadows, docs/shadows.md); off (default)")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_flag("--explain", args->explain,
                 "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");

@@ -1,16 +1,20 @@
 // vlit probe --lights LIGHTS.json --points POINTS.csv [--specular peak|neighborhood:K|exact|none]
-//            [--precision double|float]
+//            [--precision double|float] [--occluders SCENE.gltf|glb]
 // A light meter: diffuse and specular (kd = ks = 1, scalar intensities, colours ignored) summed
-// over all lights at each point, 17 significant digits.
+// over all lights at each point, 17 significant digits. With --occluders, the triangles of SCENE
+// (all meshes, transforms applied) hide the lights that cast shadows (docs/shadows.md).
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "cli/commands.h"
 #include "cli/specular_option.h"
 #include "core/input_error.h"
 #include "io/lights_json.h"
 #include "io/points_csv.h"
+#include "scene/load_scene.h"
 #include "shading/prepared_light.h"
+#include "shadow/shadowed_light.h"
 
 namespace vlit::cli {
 namespace {
@@ -19,10 +23,12 @@ struct ProbeArgs {
   std::string lights, points;
   std::string specular = "peak";
   std::string precision = "double";
+  std::string occluders;
 };
 
 template <class T>
-void probe(const std::vector<LightSource>& sources, const std::vector<ProbePoint>& points, const ShadeOptions& options) {
+void probe(const std::vector<LightSource>& sources, const std::vector<ProbePoint>& points, const ShadeOptions& options,
+           const OccluderBvh* occluders) {
   std::vector<PreparedLight<T>> lights;
   for (const auto& s : sources) lights.push_back(prepare_light<T>(s));
   std::printf("index,diffuse,specular\n");
@@ -32,7 +38,13 @@ void probe(const std::vector<LightSource>& sources, const std::vector<ProbePoint
                                                   static_cast<Vec3<T>>(p.eye), T(p.shininess));
     double diffuse = 0, specular = 0;
     for (std::size_t l = 0; l < lights.size(); ++l) {
-      const Response<T> r = shade(lights[l], sp, options);
+      Response<T> r;
+      if constexpr (std::is_same_v<T, double>) {
+        r = occluders && sources[l].casts_shadows ? shade_shadowed(lights[l], sp, options, *occluders)
+                                                  : shade(lights[l], sp, options);
+      } else {
+        r = shade(lights[l], sp, options);
+      }
       diffuse += sources[l].intensity * static_cast<double>(r.diffuse);
       specular += sources[l].intensity * static_cast<double>(r.specular);
     }
@@ -46,8 +58,15 @@ int run_probe(const ProbeArgs& args) {
   options.with_specular = options.specular.method != SpecularMethod::kNone;
   const auto lights = read_lights_json(args.lights);
   const auto points = read_points_csv(args.points);
-  if (args.precision == "float") probe<float>(lights, points, options);
-  else probe<double>(lights, points, options);
+  std::optional<OccluderBvh> occluders;
+  if (!args.occluders.empty()) {
+    if (args.precision == "float")
+      throw InputError(args.occluders, "--occluders needs --precision double (shadows are computed in double)");
+    LoadedScene scene = load_scene(args.occluders, "", false);
+    occluders.emplace(occluders_of(scene.scene));
+  }
+  if (args.precision == "float") probe<float>(lights, points, options, nullptr);
+  else probe<double>(lights, points, options, occluders ? &*occluders : nullptr);
   return 0;
 }
 
@@ -62,6 +81,9 @@ Runner add_probe_command(CLI::App& app) {
   cmd->add_option("--specular", args->specular, "Specular of extended lights: peak (default), neighborhood:K, exact or none");
   cmd->add_option("--precision", args->precision, "Kernel scalar type: double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
+  cmd->add_option("--occluders", args->occluders,
+                  "glTF/GLB (or OBJ, PLY, OFF, STL) whose triangles hide the lights (all meshes, transforms applied)")
+      ->check(CLI::ExistingFile);
   cmd->footer("Output: index,diffuse,specular per point, kd = ks = 1, summed over all lights with their scalar intensity.");
   return [args] { return run_probe(*args); };
 }

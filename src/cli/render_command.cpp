@@ -26,6 +26,7 @@ struct RenderArgs {
   bool quiet = false;
   bool explain = false;
   std::string specular = "peak";
+  std::string shadows = "off";
   bool no_file_lights = false;
   std::size_t max_vertices = SceneLimits{}.max_vertices;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
@@ -89,6 +90,7 @@ int run_render(const RenderArgs& args) {
   request.eye = Vec3d{camera.world_from_camera.m[0][3], camera.world_from_camera.m[1][3], camera.world_from_camera.m[2][3]};
   request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
   request.shade.specular = specular;
+  request.shadows = args.shadows == "on";
   t = Clock::now();
   const ScenePlan plan = plan_lighting(scene, request);
   const double plan_seconds = since(t);
@@ -152,6 +154,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
   cmd->add_option("--specular", args->specular,
                   "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
+  cmd->add_option("--shadows", args->shadows,
+                  "on: lights are hidden by the scene's triangles (soft shadows, docs/shadows.md); off (default)")
+      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_flag("--explain", args->explain,
                 "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");

@@ -132,6 +132,7 @@ LightSource read_light(const json& object, const std::string& file, const std::s
   light.intensity = r.number("intensity", 1.0);
   if (light.intensity < 0) r.fail("intensity", "intensity must be >= 0");
   light.color = r.vec3("color", Vec3d{1, 1, 1});
+  light.casts_shadows = r.boolean("shadows", true);
   if (light.color.x < 0 || light.color.y < 0 || light.color.z < 0) r.fail("color", "color components must be >= 0");
 
   auto read_falloff = [&](bool any_real) {

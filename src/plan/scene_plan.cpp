@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "plan/shadow_plan.h"
 
 namespace vlit {
 namespace {
@@ -128,6 +129,7 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
       }
     }
   }
+  plan_shadows(scene, kept, options.shadows, plan);
   return plan;
 }
 
@@ -137,6 +139,16 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     << scene.vertex_count() << " vertices; " << plan.pairs_kept << " of " << plan.pairs_total
     << " light x primitive pairs lit\n";
   s << "plan: specular " << specular_kernel(plan.shade) << "\n";
+  if (!plan.shadows_requested) {
+    s << "plan: shadows off\n";
+  } else {
+    std::size_t triangles = 0;
+    for (const ScenePrimitive& p : scene.primitives) triangles += p.triangles.size() / 3;
+    s << "plan: shadows on for " << plan.shadowed_pairs << " of " << plan.pairs_kept << " lit pairs";
+    if (plan.needs_occluders) s << "; BVH over " << triangles << " triangles";
+    else s << "; no BVH (nothing can occlude)";
+    s << "\n";
+  }
   for (std::size_t i = 0; i < plan.lights.size(); ++i) {
     const LightSource& l = scene.lights[plan.source_of_light[i]];
     std::size_t vertices = 0;

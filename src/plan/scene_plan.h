@@ -5,7 +5,9 @@
 //   whose emitting side does not reach the primitive's bounding box, a spot light whose cone
 //   misses the primitive's bounding sphere, a light whose glTF range ends before the box;
 // - specular work is planned only when an eye is given and asked for;
-// - every per-light constant is computed once (PreparedLight).
+// - every per-light constant is computed once (PreparedLight);
+// - shadows (when asked for) only on the pairs where some triangle may lie between the primitive
+//   and the light: boxes prove the rest unoccluded, and a planar primitive cannot shadow itself.
 // describe() prints the plan for `--explain`.
 #pragma once
 
@@ -20,12 +22,20 @@ namespace vlit {
 struct PlanOptions {
   ShadeOptions shade;
   bool has_eye = false;
+  bool shadows = false;  // --shadows on: lights with "shadows": true are hidden by the scene's triangles
 };
 
 struct ScenePlan {
   std::vector<PreparedLight<double>> lights;          // the lights that can contribute somewhere
   std::vector<std::size_t> source_of_light;          // parallel to lights: index into Scene::lights
   std::vector<std::vector<int>> lights_of_primitive;  // per scene primitive: indices into lights
+  // Parallel to lights_of_primitive: 1 where the pair is evaluated with shadows (docs/shadows.md).
+  // A pair gets shadows only if shadows are on, the light casts them, and some triangle may lie
+  // between the primitive and the light (otherwise the plan proves nothing can occlude).
+  std::vector<std::vector<char>> shadowed_of_primitive;
+  bool shadows_requested = false;
+  bool needs_occluders = false;                       // some pair is shadowed: build the BVH
+  std::size_t shadowed_pairs = 0;
   ShadeOptions shade;                                 // with_specular already resolved
   std::vector<std::string> skipped;                   // one line per skipped light or pair, why
   std::size_t pairs_total = 0, pairs_kept = 0;

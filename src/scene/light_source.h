@@ -34,6 +34,8 @@ struct LightSource {
 
   Vec3d center, normal{0, 0, 1};    // disk: emits toward normal
   double radius = 1;
+
+  bool casts_shadows = true;        // LIGHTS.json "shadows": false = never shadowed (docs/shadows.md)
 };
 
 }  // namespace vlit

@@ -71,7 +71,8 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
   LightPieces& pieces = scratch.pieces;
   LightPieces& next = scratch.next;
   pieces.clear();
-  pieces.add(horizon_clipped.d.data(), horizon_clipped.count);
+  pieces.add(horizon_clipped.d.data(), horizon_clipped.count, view.u, view.v);
+  const Vec3d foot{dot(view.u, -view.D), dot(view.v, -view.D), 0};  // P's foot on the light, in (u, v)
 
   ClipPolygon<double> rest, outside, tmp;
   std::array<Vec3d, 16> cone_normal;
@@ -92,20 +93,41 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
       if (length(k) > 1e-14 * length(a) * length(b)) cone_normal[planes++] = k;
     }
     if (planes < 3) continue;
+    // The occluder's central projection from P onto the light's plane, as a rectangle in (u, v):
+    // x - P = w projects to P + w h / z, z = -n.w > 0 inside the slab.
+    Rect2 shadow;
+    for (int j = 0; j < part.count; ++j) {
+      const Vec3d w = part.p[j] - p;
+      const double scale = view.height / -dot(view.normal, w);
+      shadow.grow(foot.x + dot(view.u, w) * scale, foot.y + dot(view.v, w) * scale);
+    }
+    const double pad = 1e-9 * (light.radius + std::abs(foot.x) + std::abs(foot.y));
+    shadow.x0 -= pad; shadow.x1 += pad; shadow.y0 -= pad; shadow.y1 += pad;
     next.clear();
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const Vec3d* d = pieces.points.data() + pieces.start[i];
       const int n = pieces.start[i + 1] - pieces.start[i];
-      // A piece entirely outside one plane of the cone is untouched.
-      bool untouched = false;
+      // A piece that does not meet the cone is kept whole: first the cheap test (all its
+      // corners outside one plane), then the exact one (its part inside every plane is empty or
+      // of negligible area). Cutting a piece the cone misses would only fragment it.
+      bool untouched = !pieces.rect[i].overlaps(shadow);
       for (int j = 0; j < planes && !untouched; ++j) {
         const double offset = dot(cone_normal[j], view.D);
         bool all_out = true;
         for (int v = 0; v < n && all_out; ++v) all_out = dot(cone_normal[j], d[v]) + offset <= 0;
         untouched = all_out;
       }
+      if (!untouched) {
+        rest.count = n;
+        std::copy(d, d + n, rest.d.begin());
+        for (int j = 0; j < planes && rest.count >= 3; ++j) {
+          clip_halfspace(rest.d.data(), rest.count, cone_normal[j], dot(cone_normal[j], view.D), tmp);
+          rest = tmp;
+        }
+        untouched = rest.count < 3 || !(twice_area(rest.d.data(), rest.count) > area_floor);
+      }
       if (untouched) {
-        next.add(d, n);
+        next.add(d, n, pieces.rect[i]);
         continue;
       }
       rest.count = n;
@@ -114,7 +136,7 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
         const double offset = dot(cone_normal[j], view.D);
         clip_halfspace(rest.d.data(), rest.count, -cone_normal[j], -offset, outside);
         if (outside.count >= 3 && twice_area(outside.d.data(), outside.count) > area_floor)
-          next.add(outside.d.data(), outside.count);
+          next.add(outside.d.data(), outside.count, view.u, view.v);
         clip_halfspace(rest.d.data(), rest.count, cone_normal[j], offset, tmp);
         rest = tmp;
       }

@@ -24,6 +24,7 @@
 // mesh lying on the light must not hide it (docs/shadows.md).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -33,14 +34,29 @@
 namespace vlit {
 
 // Pieces of a light, relative to the light's centre c, each a closed polygon or chain.
+// Each piece carries its bounding rectangle in the light's in-plane frame (u, v), so a piece
+// and an occluder whose projections' rectangles are disjoint are skipped without clipping.
+struct Rect2 {
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  void grow(double x, double y) { x0 = std::min(x0, x); x1 = std::max(x1, x); y0 = std::min(y0, y); y1 = std::max(y1, y); }
+  bool overlaps(const Rect2& o) const { return x0 <= o.x1 && o.x0 <= x1 && y0 <= o.y1 && o.y0 <= y1; }
+};
+
 struct LightPieces {
   std::vector<Vec3d> points;
   std::vector<int> start;  // piece i is points[start[i] .. start[i+1]); start has size() + 1 entries
+  std::vector<Rect2> rect;  // per piece, in (u, v) relative to the light's centre
   std::size_t size() const { return start.empty() ? 0 : start.size() - 1; }
-  void clear() { points.clear(); start.assign(1, 0); }
-  void add(const Vec3d* p, int n) {
+  void clear() { points.clear(); start.assign(1, 0); rect.clear(); }
+  void add(const Vec3d* p, int n, const Vec3d& u, const Vec3d& v) {
+    Rect2 r;
+    for (int i = 0; i < n; ++i) r.grow(dot(u, p[i]), dot(v, p[i]));
+    add(p, n, r);
+  }
+  void add(const Vec3d* p, int n, const Rect2& r) {
     points.insert(points.end(), p, p + n);
     start.push_back(static_cast<int>(points.size()));
+    rect.push_back(r);
   }
 };
 

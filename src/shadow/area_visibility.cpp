@@ -74,10 +74,12 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
   pieces.add(horizon_clipped.d.data(), horizon_clipped.count, view.u, view.v);
   const Vec3d foot{dot(view.u, -view.D), dot(view.v, -view.D), 0};  // P's foot on the light, in (u, v)
 
-  ClipPolygon<double> rest, outside, tmp;
-  std::array<Vec3d, 16> cone_normal;
+  // The cones of the occluders, front faces (as seen from P) first and larger shadows first:
+  // pieces are then consumed by the big and near occluders before the others can cut them, so
+  // they fragment less. The order depends only on the candidates (BVH on or off alike).
+  std::vector<OccluderCone>& cones = scratch.cones;
+  cones.clear();
   for (std::uint32_t index : scratch.candidates) {
-    if (pieces.size() == 0) break;  // fully hidden
     const auto& tri = occluders.triangles().corners[index];
     const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
     const double side = dot(n_tri, tri[0] - p);
@@ -86,31 +88,47 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
     const SmallPolygon part = clip_triangle(tri, slab_planes);
     if (part.count < 3) continue;
     // One plane through P per edge of the clipped occluder; inside the cone: dot(k, x - P) >= 0.
-    int planes = 0;
+    OccluderCone cone;
     for (int j = 0; j < part.count; ++j) {
       const Vec3d a = part.p[j] - p, b = part.p[(j + 1) % part.count] - p;
       const Vec3d k = cross(a, b) * sigma;
-      if (length(k) > 1e-14 * length(a) * length(b)) cone_normal[planes++] = k;
+      if (length(k) > 1e-14 * length(a) * length(b)) cone.normal[cone.planes++] = k;
     }
-    if (planes < 3) continue;
+    if (cone.planes < 3) continue;
     // The occluder's central projection from P onto the light's plane, as a rectangle in (u, v):
     // x - P = w projects to P + w h / z, z = -n.w > 0 inside the slab.
-    Rect2 shadow;
     for (int j = 0; j < part.count; ++j) {
       const Vec3d w = part.p[j] - p;
       const double scale = view.height / -dot(view.normal, w);
-      shadow.grow(foot.x + dot(view.u, w) * scale, foot.y + dot(view.v, w) * scale);
+      cone.shadow.grow(foot.x + dot(view.u, w) * scale, foot.y + dot(view.v, w) * scale);
     }
     const double pad = 1e-9 * (light.radius + std::abs(foot.x) + std::abs(foot.y));
-    shadow.x0 -= pad; shadow.x1 += pad; shadow.y0 -= pad; shadow.y1 += pad;
+    cone.shadow.x0 -= pad; cone.shadow.x1 += pad; cone.shadow.y0 -= pad; cone.shadow.y1 += pad;
+    cone.front = side < 0;
+    cone.size = (cone.shadow.x1 - cone.shadow.x0) * (cone.shadow.y1 - cone.shadow.y0);
+    cone.index = index;
+    cones.push_back(cone);
+  }
+  std::sort(cones.begin(), cones.end(), [](const OccluderCone& a, const OccluderCone& b) {
+    if (a.front != b.front) return a.front;
+    if (a.size != b.size) return a.size > b.size;
+    return a.index < b.index;
+  });
+
+  ClipPolygon<double> buffer_a, buffer_b, outside;
+  for (const OccluderCone& cone : cones) {
+    if (pieces.size() == 0) break;  // fully hidden
+    const int planes = cone.planes;
+    const auto& cone_normal = cone.normal;
     next.clear();
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const Vec3d* d = pieces.points.data() + pieces.start[i];
       const int n = pieces.start[i + 1] - pieces.start[i];
-      // A piece that does not meet the cone is kept whole: first the cheap test (all its
-      // corners outside one plane), then the exact one (its part inside every plane is empty or
-      // of negligible area). Cutting a piece the cone misses would only fragment it.
-      bool untouched = !pieces.rect[i].overlaps(shadow);
+      // A piece that does not meet the cone is kept whole: first the cheap tests (disjoint
+      // rectangles; all its corners outside one plane), then the exact one (its part inside
+      // every plane is empty or of negligible area). Cutting a piece the cone misses would
+      // only fragment it.
+      bool untouched = !pieces.rect[i].overlaps(cone.shadow);
       for (int j = 0; j < planes && !untouched; ++j) {
         const double offset = dot(cone_normal[j], view.D);
         bool all_out = true;
@@ -118,27 +136,31 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
         untouched = all_out;
       }
       if (!untouched) {
-        rest.count = n;
-        std::copy(d, d + n, rest.d.begin());
-        for (int j = 0; j < planes && rest.count >= 3; ++j) {
-          clip_halfspace(rest.d.data(), rest.count, cone_normal[j], dot(cone_normal[j], view.D), tmp);
-          rest = tmp;
+        ClipPolygon<double>* rest = &buffer_a;
+        ClipPolygon<double>* tmp = &buffer_b;
+        rest->count = n;
+        std::copy(d, d + n, rest->d.begin());
+        for (int j = 0; j < planes && rest->count >= 3; ++j) {
+          clip_halfspace(rest->d.data(), rest->count, cone_normal[j], dot(cone_normal[j], view.D), *tmp);
+          std::swap(rest, tmp);
         }
-        untouched = rest.count < 3 || !(twice_area(rest.d.data(), rest.count) > area_floor);
+        untouched = rest->count < 3 || !(twice_area(rest->d.data(), rest->count) > area_floor);
       }
       if (untouched) {
         next.add(d, n, pieces.rect[i]);
         continue;
       }
-      rest.count = n;
-      std::copy(d, d + n, rest.d.begin());
-      for (int j = 0; j < planes && rest.count >= 3; ++j) {
+      ClipPolygon<double>* rest = &buffer_a;
+      ClipPolygon<double>* tmp = &buffer_b;
+      rest->count = n;
+      std::copy(d, d + n, rest->d.begin());
+      for (int j = 0; j < planes && rest->count >= 3; ++j) {
         const double offset = dot(cone_normal[j], view.D);
-        clip_halfspace(rest.d.data(), rest.count, -cone_normal[j], -offset, outside);
+        clip_halfspace(rest->d.data(), rest->count, -cone_normal[j], -offset, outside);
         if (outside.count >= 3 && twice_area(outside.d.data(), outside.count) > area_floor)
           next.add(outside.d.data(), outside.count, view.u, view.v);
-        clip_halfspace(rest.d.data(), rest.count, cone_normal[j], offset, tmp);
-        rest = tmp;
+        clip_halfspace(rest->d.data(), rest->count, cone_normal[j], offset, *tmp);
+        std::swap(rest, tmp);
       }
       // What is left in `rest` is inside the cone: hidden.
     }

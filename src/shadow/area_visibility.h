@@ -25,6 +25,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -60,8 +61,20 @@ struct LightPieces {
   }
 };
 
+// The cone from P over one occluder (clipped to the slab): inside is dot(normal[j], x - P) >= 0
+// for every j < planes; `shadow` bounds its projection on the light's plane.
+struct OccluderCone {
+  std::array<Vec3d, 16> normal;
+  int planes = 0;
+  Rect2 shadow;
+  bool front = false;  // the occluder faces P
+  double size = 0;     // area of `shadow`
+  std::uint32_t index = 0;
+};
+
 struct AreaShadowScratch {
   std::vector<std::uint32_t> candidates;
+  std::vector<OccluderCone> cones;
   LightPieces pieces, next;
 };
 

@@ -14,6 +14,42 @@ SpecularOptions effective_specular(const ShadeOptions& options) {
   return s;
 }
 
+// The linear neighbourhood specular (linear_specular_neighborhood.h) of a partly hidden light:
+// the same K samples as for the whole light (window around its peak), each lobe value counted
+// only if its point of the segment is visible. Never more than the unshadowed value, equal to it
+// when the window is unhidden.
+double linear_neighborhood_shadowed(const LinearLight<double>& light, const ShadingPoint<double>& sp, int k_samples,
+                                    const std::vector<std::pair<double, double>>& visible) {
+  const LinearFrame<double> fr = make_linear_frame(light, sp);
+  const double m = sp.shininess;
+  if (fr.empty) return 0;
+  auto is_visible = [&](double t) {
+    for (const auto& [a, b] : visible)
+      if (t >= a && t <= b) return true;
+    return false;
+  };
+  if (fr.zero_length) return fr.mid_cos_n > 0 && is_visible(0.5) ? phong_power(fr.mid_cos_rv, m) : 0.0;
+  const double s_peak = linear_specular_peak_position(fr);
+  const double ds = fr.s1 - fr.s0;
+  auto t_of = [&](double s) { return ds != 0 ? (s - fr.s0) / ds : 0.5; };
+  if (k_samples < 1 || fr.on_segment || !(fr.h > 0))
+    return is_visible(t_of(s_peak)) ? phong_power(linear_cos_rv(fr, s_peak), m) : 0.0;
+  constexpr double kHalfPi = 1.57079632679489661923;
+  const double delta = std::fmin(kHalfPi, 2 / std::sqrt(std::fmax(m, 1.0)));
+  const double theta_peak = std::atan2(s_peak, fr.h);
+  const double lo = std::fmax(theta_peak - delta, std::atan2(fr.sa, fr.h));
+  const double hi = std::fmin(theta_peak + delta, std::atan2(fr.sb, fr.h));
+  const double rv_h = fr.ar / fr.h;
+  double sum = 0;
+  for (int k = 0; k < k_samples; ++k) {
+    const double theta = lo + (hi - lo) * (k + 0.5) / k_samples;
+    if (!is_visible(t_of(fr.h * std::tan(theta)))) continue;
+    const double c = std::fmin(std::fmax(rv_h * std::cos(theta) + fr.br * std::sin(theta), -1.0), 1.0);
+    sum += phong_power(c, m);
+  }
+  return sum / k_samples;
+}
+
 Response<double> shade_linear_shadowed(const LinearLight<double>& light, const ShadingPoint<double>& sp,
                                        const ShadeOptions& options, const OccluderBvh& occluders) {
   const SpecularOptions spec = effective_specular(options);
@@ -21,34 +57,21 @@ Response<double> shade_linear_shadowed(const LinearLight<double>& light, const S
   if (visible_linear_intervals(light, sp.p, occluders, scratch) == LinearVisibility::kUnoccluded)
     return shade_linear(light, sp, spec, options.linear);
   Response<double> sum;
-  double best_peak = -1;
   const Vec3d ld = light.q1 - light.q0;
+  SpecularOptions piece_spec = spec;
+  if (spec.method == SpecularMethod::kNeighborhood) piece_spec.method = SpecularMethod::kNone;
   for (const auto& [ta, tb] : scratch.visible) {
     const double weight = tb - ta;
     if (!(weight > 0)) continue;
     const LinearLight<double> piece{ta == 0 ? light.q0 : light.q0 + ld * ta, tb == 1 ? light.q1 : light.q0 + ld * tb,
                                     light.falloff};
-    const Response<double> r = shade_linear(piece, sp, spec, options.linear);
-    sum.diffuse += weight * r.diffuse;
-    switch (spec.method) {
-      case SpecularMethod::kNone: break;
-      case SpecularMethod::kExact: sum.specular += weight * r.specular; break;
-      case SpecularMethod::kPeak:
-        sum.specular = std::max(sum.specular, r.specular);
-        break;
-      case SpecularMethod::kNeighborhood: {
-        // The neighbourhood of the piece holding the peak.
-        SpecularOptions peak_only = spec;
-        peak_only.method = SpecularMethod::kPeak;
-        const double peak = shade_linear(piece, sp, peak_only, options.linear).specular;
-        if (peak > best_peak) {
-          best_peak = peak;
-          sum.specular = r.specular;
-        }
-        break;
-      }
-    }
+    const Response<double> r = shade_linear(piece, sp, piece_spec, options.linear);
+    sum.diffuse += weight * r.diffuse;  // intensity is per unit t: the piece spans weight of it
+    if (spec.method == SpecularMethod::kExact) sum.specular += weight * r.specular;
+    if (spec.method == SpecularMethod::kPeak) sum.specular = std::max(sum.specular, r.specular);  // a maximum
   }
+  if (spec.method == SpecularMethod::kNeighborhood && !scratch.visible.empty())
+    sum.specular = linear_neighborhood_shadowed(light, sp, spec.neighborhood_samples, scratch.visible);
   return sum;
 }
 
@@ -85,40 +108,43 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
       case SpecularMethod::kExact:
         r.specular += area_specular_exact(piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
         break;
-      case SpecularMethod::kPeak:
-      case SpecularMethod::kNeighborhood: {
+      case SpecularMethod::kNeighborhood: break;  // below, on the whole light's ring
+      case SpecularMethod::kPeak: {
         const AreaPeak<double> peak = area_specular_peak_direction(piece, view, sp.rv);
         if (peak.visible && peak.angle < best.angle) best = peak;
         break;
       }
     }
   }
-  if (best.visible && (spec.method == SpecularMethod::kPeak || spec.method == SpecularMethod::kNeighborhood)) {
-    const double peak_value = phong_lobe_from_angle(best.angle, sp.shininess);
-    r.specular = peak_value;
-    const int samples = spec.neighborhood_samples;
-    if (spec.method == SpecularMethod::kNeighborhood && samples > 0 && peak_value > 0) {
-      // area_specular_neighborhood.h's ring, tested against every visible piece.
-      const Vec3d& w = best.direction;
+  if (best.visible && spec.method == SpecularMethod::kPeak) r.specular = phong_lobe_from_angle(best.angle, sp.shininess);
+  if (spec.method == SpecularMethod::kNeighborhood && pieces.size() > 0) {
+    // area_specular_neighborhood.h's rule on the whole light (its peak direction and ring), each
+    // of the K + 1 directions counted only if it reaches a visible piece: never more than the
+    // unshadowed value, equal to it when the peak and its ring are unhidden.
+    const AreaPeak<double> whole = area_specular_peak_direction(horizon, view, sp.rv);
+    const double peak_value = whole.visible ? phong_lobe_from_angle(whole.angle, sp.shininess) : 0.0;
+    auto reaches_visible = [&](const Vec3d& dir) {
+      for (std::size_t i = 0; i < pieces.size(); ++i) {
+        load(i);
+        if (ray_hits_polygon(piece, view, dir)) return true;
+      }
+      return false;
+    };
+    const int samples = std::max(0, spec.neighborhood_samples);
+    int visible = reaches_visible(whole.direction) ? 1 : 0;
+    if (peak_value > 0 && samples > 0) {
+      const Vec3d& w = whole.direction;
       const Vec3d helper = std::abs(w.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
       const Vec3d t1 = normalize(cross(w, helper));
       const Vec3d t2 = cross(w, t1);
       const double gamma = neighborhood_half_angle(sp.shininess);
       const double cg = std::cos(gamma), sg = std::sin(gamma);
-      int visible = 0;
       for (int k = 0; k < samples; ++k) {
         const double phi = 2 * M_PI * (k + 0.5) / samples;
-        const Vec3d dir = w * cg + (t1 * std::cos(phi) + t2 * std::sin(phi)) * sg;
-        for (std::size_t i = 0; i < pieces.size(); ++i) {
-          load(i);
-          if (ray_hits_polygon(piece, view, dir)) {
-            ++visible;
-            break;
-          }
-        }
+        visible += reaches_visible(w * cg + (t1 * std::cos(phi) + t2 * std::sin(phi)) * sg);
       }
-      r.specular = peak_value * (1 + visible) / (samples + 1);
     }
+    r.specular = peak_value * visible / (samples + 1);
   }
   return r;
 }

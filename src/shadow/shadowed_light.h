@@ -9,11 +9,12 @@
 //   t (docs/lights-json.md), so a sub-segment shaded as a light of its own is scaled by
 //   (t_b - t_a) to keep the same emission density: diffuse and exact specular sum over the
 //   pieces with that weight; the peak specular is the largest peak over the pieces (a maximum,
-//   not an integral); the neighbourhood specular is that of the piece holding the peak;
+//   not an integral); the neighbourhood specular keeps the whole light's K samples and counts
+//   only the visible ones (so it never exceeds the unshadowed value);
 // - area: the visible pieces of the light (area_visibility.h); diffuse and exact specular are
 //   sums over the pieces (both are integrals over the light: contour sums are additive over a
-//   partition), the peak is the largest peak over the pieces, the neighbourhood is the peak
-//   times the fraction of ring samples that reach any visible piece;
+//   partition), the peak is the largest peak over the pieces, the neighbourhood keeps the whole
+//   light's peak direction and ring and counts only the directions that reach a visible piece;
 // - disk: shadowed as its equal-area regular 64-gon (the disk kernel is a polygon bracket
 //   itself); unshadowed points use the disk kernel unchanged.
 // When no occluder reaches between P and the light the unshadowed kernel is called, so a light

@@ -80,6 +80,7 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
   std::vector<OccluderCone>& cones = scratch.cones;
   cones.clear();
   for (std::uint32_t index : scratch.candidates) {
+    if (culled_back_face(occluders.triangles(), index, p)) continue;
     const auto& tri = occluders.triangles().corners[index];
     const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
     const double side = dot(n_tri, tri[0] - p);

@@ -1,12 +1,38 @@
 #include "shadow/occluder_triangles.h"
 
+#include <map>
+#include <tuple>
+
 namespace vlit {
+
+bool is_closed_surface(const ScenePrimitive& prim) {
+  using Key = std::tuple<double, double, double, double, double, double>;
+  std::map<Key, int> directed;
+  const std::size_t n = prim.positions.size();
+  if (prim.triangles.empty()) return false;
+  for (std::size_t t = 0; t + 2 < prim.triangles.size(); t += 3)
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t a = prim.triangles[t + e], b = prim.triangles[t + (e + 1) % 3];
+      if (a >= n || b >= n) return false;
+      const Vec3d& pa = prim.positions[a];
+      const Vec3d& pb = prim.positions[b];
+      if (pa == pb) return false;
+      if (++directed[Key{pa.x, pa.y, pa.z, pb.x, pb.y, pb.z}] > 1) return false;
+    }
+  for (const auto& [key, count] : directed) {
+    const auto& [ax, ay, az, bx, by, bz] = key;
+    const auto it = directed.find(Key{bx, by, bz, ax, ay, az});
+    if (it == directed.end() || it->second != 1) return false;
+  }
+  return true;
+}
 
 OccluderTriangles occluders_of(const Scene& scene) {
   OccluderTriangles out;
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const ScenePrimitive& prim = scene.primitives[p];
     const std::size_t n = prim.positions.size();
+    const char closed = is_closed_surface(prim) ? 1 : 0;
     for (std::size_t t = 0; t + 2 < prim.triangles.size(); t += 3) {
       const std::uint32_t a = prim.triangles[t], b = prim.triangles[t + 1], c = prim.triangles[t + 2];
       if (a >= n || b >= n || c >= n) continue;
@@ -14,6 +40,7 @@ OccluderTriangles occluders_of(const Scene& scene) {
       if (!is_finite(tri[0]) || !is_finite(tri[1]) || !is_finite(tri[2])) continue;
       out.corners.push_back(tri);
       out.ids.push_back({static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(t / 3)});
+      out.closed.push_back(closed);
     }
   }
   return out;

@@ -20,12 +20,26 @@ struct OccluderId {
 struct OccluderTriangles {
   std::vector<std::array<Vec3d, 3>> corners;  // world space
   std::vector<OccluderId> ids;                // parallel to corners
+  // Parallel to corners (may be empty = none): 1 if the triangle's primitive is a closed,
+  // consistently wound surface. Seen from a point outside such a solid (or on it), whatever it
+  // hides is hidden by its faces that face the point, so its back faces can be skipped.
+  std::vector<char> closed;
   std::size_t size() const { return corners.size(); }
 };
 
 // Every triangle of every primitive (transforms are already applied in a Scene). Triangles with
-// an out-of-range index or a non-finite corner are left out (they hide nothing).
+// an out-of-range index or a non-finite corner are left out (they hide nothing). A primitive is
+// marked closed when every directed edge, by corner position (so split vertices still join),
+// is matched by exactly one reversed edge.
+bool is_closed_surface(const ScenePrimitive& primitive);
 OccluderTriangles occluders_of(const Scene& scene);
+
+// The occluder is a back face of a closed surface as seen from p: it can be skipped.
+inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, const Vec3d& p) {
+  if (t.closed.empty() || !t.closed[index]) return false;
+  const auto& c = t.corners[index];
+  return dot(cross(c[1] - c[0], c[2] - c[0]), p - c[0]) < 0;
+}
 
 // True if one corner of the triangle is exactly p: a vertex is never shadowed by the triangles
 // that contain it, including triangles of other primitives through the same position (split

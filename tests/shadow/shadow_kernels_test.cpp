@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <random>
 
 #include "shadow_test_util.h"
 
@@ -203,5 +204,43 @@ TEST_CASE("a light nothing reaches gives the unshadowed kernel's value bit for b
     const PreparedLight<double> p = prepare_light<double>(l);
     CHECK(shade_shadowed(p, sp, o, bvh).diffuse == shade(p, sp, o).diffuse);
     CHECK(shade_shadowed(p, sp, o, bvh).specular == shade(p, sp, o).specular);
+  }
+}
+
+TEST_CASE("back faces of a closed mesh are skipped without changing the result") {
+  // A box as a scene primitive with split vertices (4 per face, as with per-face normals): closed
+  // by position. The same triangles without the closed flag are the reference.
+  std::vector<Tri> tris;
+  add_box(tris, Vec3d{-0.4, -0.3, 0.8}, Vec3d{0.3, 0.4, 1.3});
+  ScenePrimitive box;
+  for (const Tri& t : tris)
+    for (const Vec3d& c : t) {
+      box.triangles.push_back(static_cast<std::uint32_t>(box.positions.size()));
+      box.positions.push_back(c);
+      box.normals.push_back({0, 0, 1});
+    }
+  CHECK(is_closed_surface(box));
+  ScenePrimitive open_box = box;
+  open_box.triangles.resize(open_box.triangles.size() - 6);  // drop one face
+  CHECK_FALSE(is_closed_surface(open_box));
+  Scene scene;
+  scene.primitives.push_back(box);
+  const OccluderTriangles culled_triangles = occluders_of(scene);
+  REQUIRE(culled_triangles.closed.size() == 12);
+  CHECK(culled_triangles.closed[0] == 1);
+  const OccluderBvh culled(culled_triangles), plain = make_bvh(tris);
+  const PreparedLight<double> area = prepare_light<double>(area_source(square_light(1, 2)));
+  const PreparedLight<double> tube = prepare_light<double>(linear_source({-1, 0.2, 2}, {1, -0.1, 2}, 2));
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> pos(-1, 1);
+  for (int i = 0; i < 40; ++i) {
+    const ShadingPoint<double> sp = point_up({pos(rng), pos(rng), 0});
+    for (const PreparedLight<double>* l : {&area, &tube}) {
+      const ShadeOptions o = options_with(SpecularMethod::kExact);
+      const Response<double> a = shade_shadowed(*l, sp, o, culled), b = shade_shadowed(*l, sp, o, plain);
+      const double open = shade(*l, sp, o).diffuse;
+      CHECK(std::abs(a.diffuse - b.diffuse) <= 1e-12 * open);
+      CHECK(a.specular == doctest::Approx(b.specular).epsilon(1e-7));
+    }
   }
 }

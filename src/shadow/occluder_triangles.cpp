@@ -5,20 +5,22 @@
 
 namespace vlit {
 
-bool is_closed_surface(const ScenePrimitive& prim) {
+bool is_closed_surface(const std::vector<const ScenePrimitive*>& parts) {
   using Key = std::tuple<double, double, double, double, double, double>;
   std::map<Key, int> directed;
-  const std::size_t n = prim.positions.size();
-  if (prim.triangles.empty()) return false;
-  for (std::size_t t = 0; t + 2 < prim.triangles.size(); t += 3)
-    for (int e = 0; e < 3; ++e) {
-      const std::uint32_t a = prim.triangles[t + e], b = prim.triangles[t + (e + 1) % 3];
-      if (a >= n || b >= n) return false;
-      const Vec3d& pa = prim.positions[a];
-      const Vec3d& pb = prim.positions[b];
-      if (pa == pb) return false;
-      if (++directed[Key{pa.x, pa.y, pa.z, pb.x, pb.y, pb.z}] > 1) return false;
-    }
+  for (const ScenePrimitive* prim : parts) {
+    const std::size_t n = prim->positions.size();
+    for (std::size_t t = 0; t + 2 < prim->triangles.size(); t += 3)
+      for (int e = 0; e < 3; ++e) {
+        const std::uint32_t a = prim->triangles[t + e], b = prim->triangles[t + (e + 1) % 3];
+        if (a >= n || b >= n) return false;
+        const Vec3d& pa = prim->positions[a];
+        const Vec3d& pb = prim->positions[b];
+        if (pa == pb) return false;
+        if (++directed[Key{pa.x, pa.y, pa.z, pb.x, pb.y, pb.z}] > 1) return false;
+      }
+  }
+  if (directed.empty()) return false;
   for (const auto& [key, count] : directed) {
     const auto& [ax, ay, az, bx, by, bz] = key;
     const auto it = directed.find(Key{bx, by, bz, ax, ay, az});
@@ -29,10 +31,25 @@ bool is_closed_surface(const ScenePrimitive& prim) {
 
 OccluderTriangles occluders_of(const Scene& scene) {
   OccluderTriangles out;
+  // Closedness of each glTF node's mesh instance as a whole (a mesh split into primitives by
+  // material is closed only together), else of each primitive alone.
+  std::vector<char> closed_primitive(scene.primitives.size(), 0);
+  std::map<std::pair<int, int>, std::vector<std::size_t>> instances;
+  for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
+    const ScenePrimitive& prim = scene.primitives[p];
+    if (prim.node >= 0) instances[{prim.node, prim.mesh}].push_back(p);
+    else closed_primitive[p] = is_closed_surface({&prim});
+  }
+  for (const auto& [key, members] : instances) {
+    std::vector<const ScenePrimitive*> parts;
+    for (std::size_t p : members) parts.push_back(&scene.primitives[p]);
+    const char closed = is_closed_surface(parts);
+    for (std::size_t p : members) closed_primitive[p] = closed;
+  }
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const ScenePrimitive& prim = scene.primitives[p];
     const std::size_t n = prim.positions.size();
-    const char closed = is_closed_surface(prim) ? 1 : 0;
+    const char closed = closed_primitive[p];
     for (std::size_t t = 0; t + 2 < prim.triangles.size(); t += 3) {
       const std::uint32_t a = prim.triangles[t], b = prim.triangles[t + 1], c = prim.triangles[t + 2];
       if (a >= n || b >= n || c >= n) continue;

@@ -30,8 +30,9 @@ struct OccluderTriangles {
 // Every triangle of every primitive (transforms are already applied in a Scene). Triangles with
 // an out-of-range index or a non-finite corner are left out (they hide nothing). A primitive is
 // marked closed when every directed edge, by corner position (so split vertices still join),
-// is matched by exactly one reversed edge.
-bool is_closed_surface(const ScenePrimitive& primitive);
+// is matched by exactly one reversed edge. The primitives of one glTF node's mesh are tested
+// together (a mesh split by material is closed only as a whole).
+bool is_closed_surface(const std::vector<const ScenePrimitive*>& parts);
 OccluderTriangles occluders_of(const Scene& scene);
 
 // The occluder is a back face of a closed surface as seen from p: it can be skipped.

@@ -219,10 +219,10 @@ TEST_CASE("back faces of a closed mesh are skipped without changing the result")
       box.positions.push_back(c);
       box.normals.push_back({0, 0, 1});
     }
-  CHECK(is_closed_surface(box));
+  CHECK(is_closed_surface({&box}));
   ScenePrimitive open_box = box;
   open_box.triangles.resize(open_box.triangles.size() - 6);  // drop one face
-  CHECK_FALSE(is_closed_surface(open_box));
+  CHECK_FALSE(is_closed_surface({&open_box}));
   Scene scene;
   scene.primitives.push_back(box);
   const OccluderTriangles culled_triangles = occluders_of(scene);

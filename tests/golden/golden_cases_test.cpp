@@ -258,6 +258,17 @@ TEST_CASE("golden: each light model alone on a floor with a sphere") {
   }
 }
 
+TEST_CASE("golden: shadows (docs/shadows.md)") {
+  SUBCASE("area light, the sphere's soft shadow on the floor") {
+    check_golden("shadow-area", scenes().lit_floor.string(), write_lights("shadow-area", R"({"lights": [
+      {"type": "area", "polygon": [[-0.45, 1.4, 0.15], [0.45, 1.4, 0.15], [0.45, 1.4, 1.05], [-0.45, 1.4, 1.05]],
+       "intensity": 6}]})"), "--shadows on");
+  }
+  SUBCASE("the paper's bowling lane under its spot lights, sharp shadows") {
+    check_golden("paper-bowling-spot-shadows", kPaper + "bowling.glb", kPaper + "bowling-spot.json", "--shadows on");
+  }
+}
+
 TEST_CASE("golden: glTF features that change what is drawn") {
   const std::string key = write_lights("features", R"({"lights": [
     {"type": "point", "position": [1.2, 1.5, 1.4], "intensity": 3, "falloff": 2},

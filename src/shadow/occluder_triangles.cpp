@@ -33,23 +33,29 @@ OccluderTriangles occluders_of(const Scene& scene) {
   OccluderTriangles out;
   // Closedness of each glTF node's mesh instance as a whole (a mesh split into primitives by
   // material is closed only together), else of each primitive alone.
-  std::vector<char> closed_primitive(scene.primitives.size(), 0);
+  std::vector<int> solid_of_primitive(scene.primitives.size(), -1);
+  auto add_solid = [&](const std::vector<std::size_t>& members) {
+    Aabb box;
+    for (std::size_t p : members)
+      for (const Vec3d& v : scene.primitives[p].positions) box.grow(v);
+    for (std::size_t p : members) solid_of_primitive[p] = static_cast<int>(out.solid_bounds.size());
+    out.solid_bounds.push_back(box);
+  };
   std::map<std::pair<int, int>, std::vector<std::size_t>> instances;
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const ScenePrimitive& prim = scene.primitives[p];
     if (prim.node >= 0) instances[{prim.node, prim.mesh}].push_back(p);
-    else closed_primitive[p] = is_closed_surface({&prim});
+    else if (is_closed_surface({&prim})) add_solid({p});
   }
   for (const auto& [key, members] : instances) {
     std::vector<const ScenePrimitive*> parts;
     for (std::size_t p : members) parts.push_back(&scene.primitives[p]);
-    const char closed = is_closed_surface(parts);
-    for (std::size_t p : members) closed_primitive[p] = closed;
+    if (is_closed_surface(parts)) add_solid(members);
   }
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const ScenePrimitive& prim = scene.primitives[p];
     const std::size_t n = prim.positions.size();
-    const char closed = closed_primitive[p];
+    const int solid = solid_of_primitive[p];
     for (std::size_t t = 0; t + 2 < prim.triangles.size(); t += 3) {
       const std::uint32_t a = prim.triangles[t], b = prim.triangles[t + 1], c = prim.triangles[t + 2];
       if (a >= n || b >= n || c >= n) continue;
@@ -57,7 +63,7 @@ OccluderTriangles occluders_of(const Scene& scene) {
       if (!is_finite(tri[0]) || !is_finite(tri[1]) || !is_finite(tri[2])) continue;
       out.corners.push_back(tri);
       out.ids.push_back({static_cast<std::uint32_t>(p), static_cast<std::uint32_t>(t / 3)});
-      out.closed.push_back(closed);
+      out.solid.push_back(solid);
     }
   }
   return out;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/vec3.h"
+#include "shadow/convex_volume.h"
 #include "scene/scene.h"
 
 namespace vlit {
@@ -20,10 +21,13 @@ struct OccluderId {
 struct OccluderTriangles {
   std::vector<std::array<Vec3d, 3>> corners;  // world space
   std::vector<OccluderId> ids;                // parallel to corners
-  // Parallel to corners (may be empty = none): 1 if the triangle's primitive is a closed,
-  // consistently wound surface. Seen from a point outside such a solid (or on it), whatever it
-  // hides is hidden by its faces that face the point, so its back faces can be skipped.
-  std::vector<char> closed;
+  // Parallel to corners (may be empty = none): the index into solid_bounds of the closed,
+  // consistently wound surface the triangle belongs to, or -1. Seen from a point outside such a
+  // solid, a segment that crosses it enters it through a face that faces the point, so its back
+  // faces can be skipped. "Outside" is proved by the solid's box: from a point inside the box
+  // (e.g. a floor vertex under an object standing on it) nothing is skipped.
+  std::vector<int> solid;
+  std::vector<Aabb> solid_bounds;
   std::size_t size() const { return corners.size(); }
 };
 
@@ -35,9 +39,13 @@ struct OccluderTriangles {
 bool is_closed_surface(const std::vector<const ScenePrimitive*>& parts);
 OccluderTriangles occluders_of(const Scene& scene);
 
-// The occluder is a back face of a closed surface as seen from p: it can be skipped.
+// The occluder is a back face of a closed surface seen from a point p outside the surface's
+// box: it can be skipped.
 inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, const Vec3d& p) {
-  if (t.closed.empty() || !t.closed[index]) return false;
+  if (t.solid.empty() || t.solid[index] < 0) return false;
+  const Aabb& box = t.solid_bounds[t.solid[index]];
+  if (p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y && p.z >= box.lo.z && p.z <= box.hi.z)
+    return false;
   const auto& c = t.corners[index];
   return dot(cross(c[1] - c[0], c[2] - c[0]), p - c[0]) < 0;
 }

@@ -20,6 +20,9 @@ namespace vlit::raster {
 struct ClipVertex {
   Vec4d position;  // clip space (OpenGL convention, -w <= x, y, z <= w is the view volume)
   Vec3d color;     // linear RGB, interpolated linearly in clip space (= perspective-correct)
+  // Whether the polygon edge from this vertex to the next one lies on an edge of the original
+  // triangle (true) or on a clip plane (false). The wireframe view draws only original edges.
+  bool original_edge_to_next = true;
 };
 
 // Planes as 4-vectors: a point p is inside when dot(plane, p) >= 0.
@@ -39,6 +42,8 @@ ClipPlanes make_clip_planes(int grid_width, int grid_height, bool has_far);
 
 // Clips the triangle a, b, c (order kept, so the winding is kept) and returns the number of
 // vertices of the resulting convex polygon written to `out`: 0 if nothing is left, else 3..16.
+// Each output vertex's original_edge_to_next tells whether the edge it starts lies on one of the
+// triangle's edges (inputs: a->b, b->c, c->a as given by the inputs' own flags).
 int clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
                   const ClipPlanes& planes, std::array<ClipVertex, kMaxClipVertices>& out);
 

@@ -1,6 +1,11 @@
 // Band storage, span shading and resolve; see framebuffer.h.
 #include "raster/framebuffer.h"
 
+#include <array>
+#include <cmath>
+
+#include "raster/fixed_point.h"
+
 namespace vlit::raster {
 
 void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& background) {
@@ -25,6 +30,51 @@ void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int 
       depth_[offset + col] = z;
       const double w = 1.0 / inv_w;
       color_[offset + col] = Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)};
+    }
+    depth += t.depth.ddx;
+    inv_w += t.inv_w.ddx;
+    r_w += t.color_over_w[0].ddx;
+    g_w += t.color_over_w[1].ddx;
+    b_w += t.color_over_w[2].ddx;
+  }
+}
+
+void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_begin, int col_end,
+                                      double wire_width, const Vec3f& wire_color) {
+  // Distance of a sample centre to the line through an edge p -> q, as an affine function of the
+  // column: |n . (s - p)| with n the unit normal of the edge, stepping by n.x per column.
+  struct EdgeDistance {
+    double at_begin, step;
+  };
+  std::array<EdgeDistance, 3> edges;
+  int edge_count = 0;
+  const double sx = col_begin + 0.5, sy = row + 0.5;
+  const auto add = [&](int p, int q) {
+    const double px = double(t.x[p]) / kSubpixelOne, py = double(t.y[p]) / kSubpixelOne;
+    const double ex = double(t.x[q] - t.x[p]) / kSubpixelOne, ey = double(t.y[q] - t.y[p]) / kSubpixelOne;
+    const double inv_length = 1.0 / std::sqrt(ex * ex + ey * ey);
+    const double nx = -ey * inv_length, ny = ex * inv_length;
+    edges[edge_count++] = {nx * (sx - px) + ny * (sy - py), nx};
+  };
+  if (t.original_edges & kEdgeTopMid) add(0, 1);
+  if (t.original_edges & kEdgeMidBottom) add(1, 2);
+  if (t.original_edges & kEdgeTopBottom) add(0, 2);
+
+  // The same stepping as shade_span (bit-identical colours off the wire).
+  const double dx = col_begin + 0.5 - t.ref_x, dy = row + 0.5 - t.ref_y;
+  const auto start = [&](const Gradient& g) { return g.at_ref + g.ddx * dx + g.ddy * dy; };
+  double depth = start(t.depth), inv_w = start(t.inv_w);
+  double r_w = start(t.color_over_w[0]), g_w = start(t.color_over_w[1]), b_w = start(t.color_over_w[2]);
+  const size_t offset = size_t(row - row_begin_) * size_t(width_);
+  for (int col = col_begin; col < col_end; ++col) {
+    const float z = float(depth);
+    if (z > depth_[offset + col]) {
+      depth_[offset + col] = z;
+      bool on_wire = false;
+      for (int e = 0; e < edge_count; ++e)
+        on_wire = on_wire || std::abs(edges[e].at_begin + edges[e].step * (col - col_begin)) < wire_width;
+      const double w = 1.0 / inv_w;
+      color_[offset + col] = on_wire ? wire_color : Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)};
     }
     depth += t.depth.ddx;
     inv_w += t.inv_w.ddx;

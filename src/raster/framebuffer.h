@@ -22,6 +22,12 @@ class SampleBand {
   // exact tie the triangle drawn first wins.
   void shade_span(const SetupTriangle& t, int row, int col_begin, int col_end);
 
+  // shade_span, then samples closer than wire_width (sample-grid pixels) to one of t's original
+  // edges (the line through it) get wire_color instead of the Gouraud colour (render.h's
+  // WireframeOptions states the rule).
+  void shade_span_wireframe(const SetupTriangle& t, int row, int col_begin, int col_end, double wire_width,
+                            const Vec3f& wire_color);
+
   // Averages each samples_per_side x samples_per_side block (box filter, linear RGB) into the
   // image pixels of this band. The band must start and end on pixel boundaries.
   void resolve(int samples_per_side, Image& image) const;

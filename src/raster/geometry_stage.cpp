@@ -33,9 +33,15 @@ void setup_one(const DrawMesh& mesh, const std::vector<Vec4d>& clip, uint32_t i0
     if (!s) return;
     screen[k] = *s;
   }
-  for (int k = 1; k + 1 < count; ++k)  // fan: keeps the winding, shares the inner edges exactly
-    if (auto t = setup_triangle(screen[0], screen[k], screen[k + 1], cull, options.grid_width, options.grid_height))
+  for (int k = 1; k + 1 < count; ++k) {  // fan: keeps the winding, shares the inner edges exactly
+    // Edges 0 -> k and k+1 -> 0 are fan diagonals except on the polygon's boundary.
+    const uint8_t original = uint8_t((k == 1 && polygon[0].original_edge_to_next ? 1 : 0) |
+                                     (polygon[k].original_edge_to_next ? 2 : 0) |
+                                     (k + 2 == count && polygon[count - 1].original_edge_to_next ? 4 : 0));
+    if (auto t = setup_triangle(screen[0], screen[k], screen[k + 1], cull, options.grid_width, options.grid_height,
+                                original))
       out.push_back(*t);
+  }
 }
 
 }  // namespace

@@ -34,6 +34,9 @@ std::string validate_render_options(const RenderOptions& options) {
     return "image too large: width and height times sqrt(samples) must not exceed " +
            std::to_string(kMaxGridSize);
   if (!is_finite(options.background)) return "background colour must be finite";
+  if (options.wireframe.enabled &&
+      !(std::isfinite(options.wireframe.width) && options.wireframe.width > 0 && is_finite(options.wireframe.color)))
+    return "wireframe line width must be positive and its colour finite";
   return {};
 }
 
@@ -60,6 +63,7 @@ Image render(const std::vector<DrawMesh>& meshes, const Camera& camera, const Re
   const int band_rows = int(std::clamp<size_t>(kBandSampleBudget / samples_per_row, 1, kMaxBandRows));
   const int band_count = (options.height + band_rows - 1) / band_rows;
   const int band_sample_rows = band_rows * side;
+  const double wire_width_samples = options.wireframe.enabled ? options.wireframe.width * side : 0.0;
 
   // Bin the triangles by band, keeping draw order, so a band never looks at the others.
   std::vector<std::vector<uint32_t>> bins(band_count);
@@ -77,8 +81,13 @@ Image render(const std::vector<DrawMesh>& meshes, const Camera& camera, const Re
       band.reset(geometry.grid_width, b * band_rows * side, y_end * side, options.background);
       for (const uint32_t index : bins[b]) {
         const SetupTriangle& t = triangles[index];
-        scan_triangle(t, band.row_begin(), band.row_end(), geometry.grid_width,
-                      [&](int row, int col_begin, int col_end) { band.shade_span(t, row, col_begin, col_end); });
+        if (wire_width_samples > 0)
+          scan_triangle(t, band.row_begin(), band.row_end(), geometry.grid_width, [&](int row, int col_begin, int col_end) {
+            band.shade_span_wireframe(t, row, col_begin, col_end, wire_width_samples, options.wireframe.color);
+          });
+        else
+          scan_triangle(t, band.row_begin(), band.row_end(), geometry.grid_width,
+                        [&](int row, int col_begin, int col_end) { band.shade_span(t, row, col_begin, col_end); });
       }
       band.resolve(side, image);
     }

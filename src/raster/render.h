@@ -17,6 +17,19 @@
 
 namespace vlit::raster {
 
+// The wireframe debug view: the edges of every source triangle drawn over the shading.
+// Line rule: a covered sample belongs to the wire when its centre is closer than `width` image
+// pixels to the line through one of its triangle's own edges (the snapped screen-space edge;
+// edges created by clipping or by fanning a clipped polygon do not count). The wire is thus
+// drawn on the inner side of each edge: a shared edge gets a line 2 x width wide, half from each
+// triangle, a silhouette edge width wide; wire samples keep their triangle's depth, so hidden
+// edges stay hidden, and the supersamples antialias the lines like everything else.
+struct WireframeOptions {
+  bool enabled = false;
+  double width = 0.5;            // image pixels, > 0, on each side of a shared edge
+  Vec3f color{1.0f, 0.35f, 0.0f};  // linear RGB, scaled by exposure like every other colour
+};
+
 struct RenderOptions {
   int width = 800, height = 600;  // pixels, >= 1; width * side and height * side <= kMaxGridSize
   // Samples per pixel on an ordered side x side grid at ((i + 0.5)/side, (j + 0.5)/side):
@@ -24,6 +37,7 @@ struct RenderOptions {
   int samples = 1;
   Vec3f background{0, 0, 0};  // linear RGB
   bool cull_back_faces = false;  // cull back faces of meshes that are not double-sided
+  WireframeOptions wireframe;
   // There is deliberately no exposure here: render() returns scene-linear values and exposure is
   // applied exactly once, by encode_srgb8(image, exposure).
 };

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "core/mat4.h"
 #include "core/vec3.h"
@@ -39,6 +40,15 @@ constexpr int kMaxClipVertices = 16;
 // Near plane (z >= -w), far plane (z <= w) if has_far, and the guard band for a sample grid of
 // grid_width x grid_height pixels (x, y within [-kGuardBandPixels, kGuardBandPixels] pixels).
 ClipPlanes make_clip_planes(int grid_width, int grid_height, bool has_far);
+
+// Bit i is set when p is outside plane i (dot(plane, p) < 0). A triangle whose vertices' codes
+// are all 0 needs no clipping; one whose codes share a bit is entirely outside (clip_triangle's
+// own fast paths, computed once per vertex instead of once per triangle corner).
+inline uint8_t outcode(const ClipPlanes& planes, const Vec4d& p) {
+  uint8_t code = 0;
+  for (int i = 0; i < planes.count; ++i) code |= uint8_t(dot(planes.planes[i], p) < 0 ? 1 << i : 0);
+  return code;
+}
 
 // Clips the triangle a, b, c (order kept, so the winding is kept) and returns the number of
 // vertices of the resulting convex polygon written to `out`: 0 if nothing is left, else 3..16.

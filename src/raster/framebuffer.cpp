@@ -1,12 +1,16 @@
 // Band storage, span shading and resolve; see framebuffer.h.
 #include "raster/framebuffer.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 
 #include "raster/fixed_point.h"
 
 namespace vlit::raster {
+
+static_assert(sizeof(Vec3f) == 3 * sizeof(float), "Vec3f is three packed floats, like Image::rgb");
 
 void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& background) {
   width_ = width;
@@ -19,7 +23,7 @@ void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& backg
 
 void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int col_end) {
   // Attribute values at the first sample centre of the span, then one step per sample.
-  const double dx = col_begin + 0.5 - t.ref_x, dy = row + 0.5 - t.ref_y;
+  const double dx = col_begin + 0.5 - t.ref_x(), dy = row + 0.5 - t.ref_y();
   const auto start = [&](const Gradient& g) { return g.at_ref + g.ddx * dx + g.ddy * dy; };
   double depth = start(t.depth), inv_w = start(t.inv_w);
   double r_w = start(t.color_over_w[0]), g_w = start(t.color_over_w[1]), b_w = start(t.color_over_w[2]);
@@ -61,7 +65,7 @@ void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_b
   if (t.original_edges & kEdgeTopBottom) add(0, 2);
 
   // The same stepping as shade_span (bit-identical colours off the wire).
-  const double dx = col_begin + 0.5 - t.ref_x, dy = row + 0.5 - t.ref_y;
+  const double dx = col_begin + 0.5 - t.ref_x(), dy = row + 0.5 - t.ref_y();
   const auto start = [&](const Gradient& g) { return g.at_ref + g.ddx * dx + g.ddy * dy; };
   double depth = start(t.depth), inv_w = start(t.inv_w);
   double r_w = start(t.color_over_w[0]), g_w = start(t.color_over_w[1]), b_w = start(t.color_over_w[2]);
@@ -86,6 +90,11 @@ void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_b
 
 void SampleBand::resolve(int samples_per_side, Image& image) const {
   const int s = samples_per_side;
+  if (s == 1) {  // one sample per pixel: the mean is the sample itself (bit-identical to the loop below)
+    for (int y = row_begin_; y < row_end_; ++y)
+      std::memcpy(image.pixel(0, y), color_.data() + size_t(y - row_begin_) * size_t(width_), sizeof(Vec3f) * size_t(image.width));
+    return;
+  }
   const double inv_count = 1.0 / (double(s) * s);
   for (int y = row_begin_ / s; y < row_end_ / s; ++y)
     for (int x = 0; x < image.width; ++x) {

@@ -12,9 +12,10 @@ namespace {
 
 constexpr size_t kTriangleChunk = 4096;
 
-// Appends the set-up pieces of triangle (i0, i1, i2) of `mesh`; clip is the transformed positions.
-void setup_one(const DrawMesh& mesh, const std::vector<Vec4d>& clip, uint32_t i0, uint32_t i1, uint32_t i2,
-               const ClipPlanes& planes, const GeometryOptions& options, bool cull,
+// Appends the set-up pieces of triangle (i0, i1, i2) of `mesh`; clip is the transformed positions,
+// outcodes their clip outcodes.
+void setup_one(const DrawMesh& mesh, const std::vector<Vec4d>& clip, const std::vector<uint8_t>& outcodes, uint32_t i0,
+               uint32_t i1, uint32_t i2, const ClipPlanes& planes, const GeometryOptions& options, bool cull,
                std::vector<SetupTriangle>& out) {
   const size_t n = clip.size();
   if (i0 >= n || i1 >= n || i2 >= n) return;
@@ -24,6 +25,15 @@ void setup_one(const DrawMesh& mesh, const std::vector<Vec4d>& clip, uint32_t i0
   };
   const ClipVertex a = vertex(i0), b = vertex(i1), c = vertex(i2);
   if (!is_finite(a.position) || !is_finite(b.position) || !is_finite(c.position)) return;
+  if (outcodes[i0] & outcodes[i1] & outcodes[i2]) return;  // entirely outside one plane
+  if ((outcodes[i0] | outcodes[i1] | outcodes[i2]) == 0) {  // entirely inside: no clipping
+    const auto sa = project_to_screen(a, options.grid_width, options.grid_height);
+    const auto sb = project_to_screen(b, options.grid_width, options.grid_height);
+    const auto sc = project_to_screen(c, options.grid_width, options.grid_height);
+    if (!sa || !sb || !sc) return;
+    if (auto t = setup_triangle(*sa, *sb, *sc, cull, options.grid_width, options.grid_height)) out.push_back(*t);
+    return;
+  }
 
   std::array<ClipVertex, kMaxClipVertices> polygon;
   const int count = clip_triangle(a, b, c, planes, polygon);
@@ -46,38 +56,48 @@ void setup_one(const DrawMesh& mesh, const std::vector<Vec4d>& clip, uint32_t i0
 
 }  // namespace
 
-std::vector<SetupTriangle> setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_world,
-                                        const GeometryOptions& options) {
+void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_world, const GeometryOptions& options,
+                  SetupBuffers& buffers) {
   const ClipPlanes planes = make_clip_planes(options.grid_width, options.grid_height, options.has_far_plane);
-  std::vector<SetupTriangle> result;
-  std::vector<Vec4d> clip;
+  buffers.chunk_count = 0;
+  std::vector<Vec4d>& clip = buffers.clip;
+  std::vector<uint8_t>& outcodes = buffers.outcodes;
   for (const DrawMesh& mesh : meshes) {
     const bool cull = options.cull_back_faces && !mesh.double_sided;
     clip.resize(mesh.positions.size());
+    outcodes.resize(mesh.positions.size());
     const long long vertex_count = (long long)mesh.positions.size();
 #pragma omp parallel for schedule(static)
-    for (long long i = 0; i < vertex_count; ++i)
+    for (long long i = 0; i < vertex_count; ++i) {
       clip[i] = transform_point_h(clip_from_world, Vec3d(mesh.positions[i]));
+      outcodes[i] = outcode(planes, clip[i]);
+    }
 
     const size_t triangle_count = mesh.indices.size() / 3;
+    const size_t first_chunk = buffers.chunk_count;
     const long long chunk_count = (long long)((triangle_count + kTriangleChunk - 1) / kTriangleChunk);
-    std::vector<std::vector<SetupTriangle>> chunks(chunk_count);
+    buffers.chunk_count += size_t(chunk_count);
+    if (buffers.chunks.size() < buffers.chunk_count) buffers.chunks.resize(buffers.chunk_count);
 #pragma omp parallel for schedule(dynamic, 1)
     for (long long chunk = 0; chunk < chunk_count; ++chunk) {
+      std::vector<SetupTriangle>& out = buffers.chunks[first_chunk + size_t(chunk)];
+      out.clear();
       const size_t end = std::min(triangle_count, size_t(chunk + 1) * kTriangleChunk);
-      chunks[chunk].reserve(end - size_t(chunk) * kTriangleChunk);
+      out.reserve(end - size_t(chunk) * kTriangleChunk);
       for (size_t t = size_t(chunk) * kTriangleChunk; t < end; ++t)
-        setup_one(mesh, clip, mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2], planes,
-                  options, cull, chunks[chunk]);
-    }
-    size_t total = result.size();
-    for (const auto& chunk : chunks) total += chunk.size();
-    result.reserve(total);
-    for (auto& chunk : chunks) {
-      result.insert(result.end(), chunk.begin(), chunk.end());
-      std::vector<SetupTriangle>().swap(chunk);  // release each chunk once copied
+        setup_one(mesh, clip, outcodes, mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2], planes, options,
+                  cull, out);
     }
   }
+}
+
+std::vector<SetupTriangle> setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_world,
+                                        const GeometryOptions& options) {
+  SetupBuffers buffers;
+  setup_meshes(meshes, clip_from_world, options, buffers);
+  std::vector<SetupTriangle> result;
+  for (size_t c = 0; c < buffers.chunk_count; ++c)
+    result.insert(result.end(), buffers.chunks[c].begin(), buffers.chunks[c].end());
   return result;
 }
 

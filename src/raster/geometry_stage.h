@@ -17,8 +17,23 @@ struct GeometryOptions {
   bool cull_back_faces = false;         // applies to meshes that are not double-sided
 };
 
+// The set-up triangles of a frame, in draw order: chunks[0], chunks[1], ... up to chunk_count,
+// each the visible pieces of a fixed-size run of source triangles. They are not concatenated (a
+// copy of ~160 bytes per triangle); a renderer keeps this between frames so that the storage is
+// reused (clear() keeps capacity) instead of freshly allocated and page-faulted every frame.
+struct SetupBuffers {
+  std::vector<Vec4d> clip;                           // one mesh's clip-space positions
+  std::vector<uint8_t> outcodes;                     // and their clip outcodes (clip.h)
+  std::vector<std::vector<SetupTriangle>> chunks;    // capacity kept across frames
+  size_t chunk_count = 0;                            // chunks in use this frame
+};
+
 // Triangles with a non-finite vertex (NaN/Inf position or colour, or a projection that overflows)
 // or an out-of-range index are skipped, as are zero-area ones (triangle_setup.h).
+void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_world, const GeometryOptions& options,
+                  SetupBuffers& buffers);
+
+// The same, concatenated into one list (for tests and small scenes).
 std::vector<SetupTriangle> setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_world,
                                         const GeometryOptions& options);
 

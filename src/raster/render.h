@@ -7,6 +7,7 @@
 // triangle clipped to its rows, so the image is bit-identical whatever the thread count.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,24 @@ std::string validate_render_options(const RenderOptions& options);
 
 // Side of the supersampling grid for options.samples (1 when invalid).
 int samples_per_side(int samples);
+
+// Memory that render() keeps between frames: the set-up triangles, the band bins, one band buffer
+// per thread. Rendering many frames with one workspace (and one Image) reuses their storage
+// instead of allocating and page-faulting it every frame; the image is bit-identical either way.
+// One workspace per concurrent render() call.
+class RenderWorkspace {
+ public:
+  RenderWorkspace();
+  ~RenderWorkspace();
+  RenderWorkspace(RenderWorkspace&&) noexcept;
+  RenderWorkspace& operator=(RenderWorkspace&&) noexcept;
+  struct Buffers;  // render.cpp
+  std::unique_ptr<Buffers> buffers;
+};
+
+// Renders into `image` (resized as needed, storage reused), with the workspace's buffers.
+void render(const std::vector<DrawMesh>& meshes, const Camera& camera, const RenderOptions& options,
+            RenderWorkspace& workspace, Image& image);
 
 // Renders the meshes. Preconditions: validate_render_options(options) and validate_camera(camera)
 // are empty; otherwise returns an empty Image (0 x 0) for bad options, and a background-filled

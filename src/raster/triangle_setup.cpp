@@ -43,7 +43,9 @@ std::optional<SetupTriangle> setup_triangle(const ScreenVertex& a, const ScreenV
 
   const std::array<const ScreenVertex*, 3> input = {&a, &b, &c};
   std::array<int, 3> order = {0, 1, 2};  // order[k] = input index of the k-th vertex from the top
-  std::stable_sort(order.begin(), order.end(), [&](int p, int q) { return input[p]->y < input[q]->y; });
+  // Stable sort by y (ties keep the input order): insertion sort of three.
+  for (int i = 1; i < 3; ++i)
+    for (int j = i; j > 0 && input[order[j]]->y < input[order[j - 1]]->y; --j) std::swap(order[j], order[j - 1]);
   const std::array<const ScreenVertex*, 3> v = {input[order[0]], input[order[1]], input[order[2]]};
   const ScreenVertex& top = *v[0];
   const ScreenVertex& mid = *v[1];
@@ -73,9 +75,8 @@ std::optional<SetupTriangle> setup_triangle(const ScreenVertex& a, const ScreenV
     t.original_edges |= lo == 0 ? (hi == 1 ? kEdgeTopMid : kEdgeTopBottom) : kEdgeMidBottom;
   }
 
+  static_assert(kSubpixelBits == 8, "SetupTriangle::ref_x() assumes 8 sub-pixel bits");
   const double one = double(kSubpixelOne);
-  t.ref_x = double(top.x) / one;
-  t.ref_y = double(top.y) / one;
   const double x1 = double(mid.x - top.x) / one, y1 = double(mid.y - top.y) / one;
   const double x2 = double(bot.x - top.x) / one, y2 = double(bot.y - top.y) / one;
   const double inv_area2 = 1.0 / (x1 * y2 - x2 * y1);

@@ -35,7 +35,7 @@ struct ScreenVertex {
 std::optional<ScreenVertex> project_to_screen(const ClipVertex& v, int grid_width, int grid_height);
 
 // An attribute as a plane over the sample grid: value(x, y) = at_ref + ddx (x - ref_x) + ddy (y - ref_y),
-// x, y in sample-grid pixels.
+// x, y in sample-grid pixels, (ref_x, ref_y) = the top vertex (SetupTriangle::ref_x(), ref_y()).
 struct Gradient {
   double at_ref = 0, ddx = 0, ddy = 0;
 };
@@ -49,10 +49,15 @@ struct SetupTriangle {
   // polygon), for the wireframe view: kEdgeTopMid | kEdgeMidBottom | kEdgeTopBottom.
   uint8_t original_edges = 0;
   int row_begin = 0, row_end = 0;   // sample rows whose centres it may cover, clamped to the grid
-  double ref_x = 0, ref_y = 0;      // the top vertex in pixels, origin of the gradients
   Gradient depth, inv_w;
   std::array<Gradient, 3> color_over_w;
+
+  // The top vertex in pixels, origin of the gradients (exact: a division by a power of two).
+  double ref_x() const { return double(x[0]) / double(int64_t{1} << 8); }
+  double ref_y() const { return double(y[0]) / double(int64_t{1} << 8); }
 };
+// 160 bytes: the rasterizer keeps one per visible triangle until the frame is drawn.
+static_assert(sizeof(SetupTriangle) == 160);
 
 // Sets up the triangle a, b, c (in its original winding). Returns nullopt when it covers no
 // sample centre of the grid (zero area after snapping, outside the rows or columns), or when

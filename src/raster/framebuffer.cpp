@@ -12,13 +12,19 @@ namespace vlit::raster {
 
 static_assert(sizeof(Vec3f) == 3 * sizeof(float), "Vec3f is three packed floats, like Image::rgb");
 
-void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& background) {
+void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& background, Vec3f* image_rows) {
   width_ = width;
   row_begin_ = row_begin;
   row_end_ = row_end;
   const size_t n = size_t(width) * size_t(row_end - row_begin);
   depth_.assign(n, -1.0f);
-  color_.assign(n, background);
+  if (image_rows) {
+    color_ = image_rows;
+    std::fill_n(color_, n, background);
+  } else {
+    own_color_.assign(n, background);
+    color_ = own_color_.data();
+  }
 }
 
 void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int col_end) {
@@ -91,16 +97,17 @@ void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_b
 void SampleBand::resolve(int samples_per_side, Image& image) const {
   const int s = samples_per_side;
   if (s == 1) {  // one sample per pixel: the mean is the sample itself (bit-identical to the loop below)
-    for (int y = row_begin_; y < row_end_; ++y)
-      std::memcpy(image.pixel(0, y), color_.data() + size_t(y - row_begin_) * size_t(width_), sizeof(Vec3f) * size_t(image.width));
-    return;
+    if (color_ == own_color_.data())
+      for (int y = row_begin_; y < row_end_; ++y)
+        std::memcpy(image.pixel(0, y), color_ + size_t(y - row_begin_) * size_t(width_), sizeof(Vec3f) * size_t(image.width));
+    return;  // else the samples were written into the image directly
   }
   const double inv_count = 1.0 / (double(s) * s);
   for (int y = row_begin_ / s; y < row_end_ / s; ++y)
     for (int x = 0; x < image.width; ++x) {
       double sum[3] = {0, 0, 0};
       for (int sy = 0; sy < s; ++sy) {
-        const Vec3f* row = color_.data() + size_t(y * s + sy - row_begin_) * size_t(width_) + size_t(x) * s;
+        const Vec3f* row = color_ + size_t(y * s + sy - row_begin_) * size_t(width_) + size_t(x) * s;
         for (int sx = 0; sx < s; ++sx) {
           sum[0] += row[sx].x;
           sum[1] += row[sx].y;

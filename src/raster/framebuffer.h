@@ -14,8 +14,10 @@ namespace vlit::raster {
 class SampleBand {
  public:
   // Holds sample rows [row_begin, row_end) of a sample grid `width` samples wide, cleared to the
-  // background colour and the far depth. Reuses its storage across calls.
-  void reset(int width, int row_begin, int row_end, const Vec3f& background);
+  // background colour and the far depth. Reuses its storage across calls. With one sample per
+  // pixel the colours can live in the image itself: pass image_rows = the image's pixel at
+  // (0, row_begin) (the image must be `width` wide); resolve() then has nothing to do.
+  void reset(int width, int row_begin, int row_end, const Vec3f& background, Vec3f* image_rows = nullptr);
 
   // Depth-tests and writes the samples [col_begin, col_end) of sample row `row` covered by t.
   // A sample is written when its depth is strictly greater (nearer) than the stored one: on an
@@ -38,7 +40,8 @@ class SampleBand {
  private:
   int width_ = 0, row_begin_ = 0, row_end_ = 0;
   std::vector<float> depth_;  // reversed depth (greater is nearer), cleared to -1 (below any surface)
-  std::vector<Vec3f> color_;
+  std::vector<Vec3f> own_color_;
+  Vec3f* color_ = nullptr;  // own_color_ or rows of the image
 };
 
 }  // namespace vlit::raster

@@ -11,6 +11,7 @@ namespace vlit::raster {
 namespace {
 
 constexpr size_t kTriangleChunk = 4096;
+constexpr long long kMinParallelVertices = 1 << 15;
 
 // Appends the set-up pieces of triangle (i0, i1, i2) of `mesh`; clip is the transformed positions,
 // outcodes their clip outcodes.
@@ -67,7 +68,9 @@ void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_wo
     clip.resize(mesh.positions.size());
     outcodes.resize(mesh.positions.size());
     const long long vertex_count = (long long)mesh.positions.size();
-#pragma omp parallel for schedule(static)
+    // Small loops stay on the calling thread: waking the team costs more than the work (and,
+    // on a loaded machine, a scheduler latency).
+#pragma omp parallel for schedule(static) if (vertex_count >= kMinParallelVertices)
     for (long long i = 0; i < vertex_count; ++i) {
       clip[i] = transform_point_h(clip_from_world, Vec3d(mesh.positions[i]));
       outcodes[i] = outcode(planes, clip[i]);
@@ -78,7 +81,7 @@ void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_wo
     const long long chunk_count = (long long)((triangle_count + kTriangleChunk - 1) / kTriangleChunk);
     buffers.chunk_count += size_t(chunk_count);
     if (buffers.chunks.size() < buffers.chunk_count) buffers.chunks.resize(buffers.chunk_count);
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) if (chunk_count > 1)
     for (long long chunk = 0; chunk < chunk_count; ++chunk) {
       std::vector<SetupTriangle>& out = buffers.chunks[first_chunk + size_t(chunk)];
       out.clear();

@@ -54,13 +54,14 @@ raster::Camera to_raster_camera(const SceneCamera& c) {
 // PNG as is (no sRGB OETF): +X = (255, 128, 128), -X = (0, 128, 128), +Y = (128, 255, 128)...
 Vec3f normal_view_color(const Vec3d& n) { return static_cast<Vec3f>(n * 0.5 + Vec3d{0.5, 0.5, 0.5}); }
 
-// Meshes coloured by their interpolated world normals (no lighting).
-std::vector<raster::DrawMesh> normal_view_meshes(const Scene& scene) {
+// Meshes coloured by their interpolated world normals (no lighting). Takes the scene's triangle
+// lists (moved, not copied).
+std::vector<raster::DrawMesh> normal_view_meshes(Scene& scene) {
   std::vector<raster::DrawMesh> meshes;
-  for (const ScenePrimitive& prim : scene.primitives) {
+  for (ScenePrimitive& prim : scene.primitives) {
     raster::DrawMesh mesh;
     mesh.double_sided = scene.material_of(prim).double_sided;
-    mesh.indices = prim.triangles;
+    mesh.indices = std::move(prim.triangles);
     mesh.positions.reserve(prim.positions.size());
     mesh.colors.reserve(prim.positions.size());
     for (std::size_t v = 0; v < prim.positions.size(); ++v) {
@@ -84,6 +85,7 @@ int run_render(const RenderArgs& args) {
   set_default_scene_limits({args.max_vertices});
   LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
   for (const auto& w : loaded.warnings) print_warning(w);
+  loaded.gltf.reset();  // the glTF document (with its buffers) is for bake's output, not needed here
   const Scene& scene = loaded.scene;
   const double load_seconds = since(t);
   const bool normals_view = args.view == "normals";
@@ -115,7 +117,7 @@ int run_render(const RenderArgs& args) {
   std::optional<ScenePlan> plan;
   std::vector<raster::DrawMesh> meshes;
   if (normals_view) {
-    meshes = normal_view_meshes(scene);
+    meshes = normal_view_meshes(loaded.scene);
   } else {
     Progress progress("lighting " + args.input, !args.quiet);
     LightingRequest request;
@@ -135,7 +137,7 @@ int run_render(const RenderArgs& args) {
       const PhongMaterial phong = phong_from_metallic_roughness(material);
       raster::DrawMesh mesh;
       mesh.double_sided = material.double_sided;
-      mesh.indices = prim.triangles;
+      mesh.indices = std::move(loaded.scene.primitives[i].triangles);  // not needed by the scene any more
       mesh.positions.reserve(prim.positions.size());
       mesh.colors.reserve(prim.positions.size());
       for (std::size_t v = 0; v < prim.positions.size(); ++v) {
@@ -147,6 +149,13 @@ int run_render(const RenderArgs& args) {
       meshes.push_back(std::move(mesh));
     }
   }
+  // The scene's geometry is not needed any more: free it before rasterizing, where a large render
+  // peaks (docs/rasterizer.md, memory).
+  const std::string plan_text = args.explain && plan ? describe(*plan, scene) : std::string("plan: none (normals view)\n");
+  for (ScenePrimitive& prim : loaded.scene.primitives) {
+    std::vector<Vec3d>().swap(prim.positions);
+    std::vector<Vec3d>().swap(prim.normals);
+  }
   t = Clock::now();
   const raster::Image image = raster::render(meshes, camera, options);
   const double raster_seconds = since(t);
@@ -156,7 +165,7 @@ int run_render(const RenderArgs& args) {
   std::string error;
   if (!raster::write_png(args.output, image.width, image.height, rgb8, &error)) throw InputError(args.output, error);
   if (args.explain) {
-    std::printf("%s\n%s", args.input.c_str(), plan ? describe(*plan, scene).c_str() : "plan: none (normals view)\n");
+    std::printf("%s\n%s", args.input.c_str(), plan_text.c_str());
     std::printf("time: load %.3f s, plan %.3f s, light %.3f s, rasterize %.3f s, encode+write %.3f s\n", load_seconds,
                 plan_seconds, light_seconds, raster_seconds, since(t));
   }

@@ -13,28 +13,37 @@ namespace {
 constexpr size_t kTriangleChunk = 4096;
 constexpr long long kMinParallelVertices = 1 << 15;
 
-// Appends the set-up pieces of triangle (i0, i1, i2) of `mesh`; clip is the transformed positions,
-// outcodes their clip outcodes.
-void setup_one(const DrawMesh& mesh, const std::vector<Vec4d>& clip, const std::vector<uint8_t>& outcodes, uint32_t i0,
-               uint32_t i1, uint32_t i2, const ClipPlanes& planes, const GeometryOptions& options, bool cull,
-               std::vector<SetupTriangle>& out) {
-  const size_t n = clip.size();
+// Per-vertex flags next to the clip outcode bits (bits 0..5, one per plane of clip.h).
+constexpr uint8_t kPlaneBits = 0x3f;
+constexpr uint8_t kNotFinite = 0x80;     // the clip-space position has a NaN or an infinity
+constexpr uint8_t kNoProjection = 0x40;  // inside every plane but its projection is not finite
+
+Vec3d vertex_color(const DrawMesh& mesh, uint32_t i) {
+  return i < mesh.colors.size() ? Vec3d(mesh.colors[i]) : Vec3d{1, 1, 1};
+}
+
+// Appends the set-up pieces of triangle (i0, i1, i2) of `mesh`. Vertices inside every plane were
+// projected once (screen, flags); a triangle that needs clipping recomputes its clip-space
+// positions (the same arithmetic, so the same values) and goes through clip_triangle.
+void setup_one(const DrawMesh& mesh, const Mat4d& clip_from_world, const std::vector<ScreenVertex>& screen_vertices,
+               const std::vector<uint8_t>& flags, uint32_t i0, uint32_t i1, uint32_t i2, const ClipPlanes& planes,
+               const GeometryOptions& options, bool cull, std::vector<SetupTriangle>& out) {
+  const size_t n = flags.size();
   if (i0 >= n || i1 >= n || i2 >= n) return;
-  const auto vertex = [&](uint32_t i) {
-    const Vec3d color = i < mesh.colors.size() ? Vec3d(mesh.colors[i]) : Vec3d{1, 1, 1};
-    return ClipVertex{clip[i], color};
-  };
-  const ClipVertex a = vertex(i0), b = vertex(i1), c = vertex(i2);
-  if (!is_finite(a.position) || !is_finite(b.position) || !is_finite(c.position)) return;
-  if (outcodes[i0] & outcodes[i1] & outcodes[i2]) return;  // entirely outside one plane
-  if ((outcodes[i0] | outcodes[i1] | outcodes[i2]) == 0) {  // entirely inside: no clipping
-    const auto sa = project_to_screen(a, options.grid_width, options.grid_height);
-    const auto sb = project_to_screen(b, options.grid_width, options.grid_height);
-    const auto sc = project_to_screen(c, options.grid_width, options.grid_height);
-    if (!sa || !sb || !sc) return;
-    if (auto t = setup_triangle(*sa, *sb, *sc, cull, options.grid_width, options.grid_height)) out.push_back(*t);
+  const uint8_t any = flags[i0] | flags[i1] | flags[i2];
+  if (any & kNotFinite) return;
+  if (flags[i0] & flags[i1] & flags[i2] & kPlaneBits) return;  // entirely outside one plane
+  if ((any & kPlaneBits) == 0) {                              // entirely inside: no clipping
+    if (any & kNoProjection) return;
+    if (auto t = setup_triangle(screen_vertices[i0], screen_vertices[i1], screen_vertices[i2], cull, options.grid_width,
+                                options.grid_height))
+      out.push_back(*t);
     return;
   }
+  const auto vertex = [&](uint32_t i) {
+    return ClipVertex{transform_point_h(clip_from_world, Vec3d(mesh.positions[i])), vertex_color(mesh, i)};
+  };
+  const ClipVertex a = vertex(i0), b = vertex(i1), c = vertex(i2);
 
   std::array<ClipVertex, kMaxClipVertices> polygon;
   const int count = clip_triangle(a, b, c, planes, polygon);
@@ -61,19 +70,28 @@ void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_wo
                   SetupBuffers& buffers) {
   const ClipPlanes planes = make_clip_planes(options.grid_width, options.grid_height, options.has_far_plane);
   buffers.chunk_count = 0;
-  std::vector<Vec4d>& clip = buffers.clip;
-  std::vector<uint8_t>& outcodes = buffers.outcodes;
+  std::vector<ScreenVertex>& screen = buffers.screen;
+  std::vector<uint8_t>& flags = buffers.flags;
   for (const DrawMesh& mesh : meshes) {
     const bool cull = options.cull_back_faces && !mesh.double_sided;
-    clip.resize(mesh.positions.size());
-    outcodes.resize(mesh.positions.size());
+    screen.resize(mesh.positions.size());
+    flags.resize(mesh.positions.size());
     const long long vertex_count = (long long)mesh.positions.size();
     // Small loops stay on the calling thread: waking the team costs more than the work (and,
     // on a loaded machine, a scheduler latency).
 #pragma omp parallel for schedule(static) if (vertex_count >= kMinParallelVertices)
     for (long long i = 0; i < vertex_count; ++i) {
-      clip[i] = transform_point_h(clip_from_world, Vec3d(mesh.positions[i]));
-      outcodes[i] = outcode(planes, clip[i]);
+      const Vec4d clip = transform_point_h(clip_from_world, Vec3d(mesh.positions[i]));
+      if (!is_finite(clip)) {
+        flags[i] = kNotFinite;
+        continue;
+      }
+      flags[i] = outcode(planes, clip);
+      if (flags[i] != 0) continue;
+      const std::optional<ScreenVertex> s =
+          project_to_screen(ClipVertex{clip, vertex_color(mesh, uint32_t(i))}, options.grid_width, options.grid_height);
+      if (s) screen[i] = *s;
+      else flags[i] = kNoProjection;
     }
 
     const size_t triangle_count = mesh.indices.size() / 3;
@@ -88,7 +106,7 @@ void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_wo
       const size_t end = std::min(triangle_count, size_t(chunk + 1) * kTriangleChunk);
       out.reserve(end - size_t(chunk) * kTriangleChunk);
       for (size_t t = size_t(chunk) * kTriangleChunk; t < end; ++t)
-        setup_one(mesh, clip, outcodes, mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2], planes, options,
+        setup_one(mesh, clip_from_world, screen, flags, mesh.indices[3 * t], mesh.indices[3 * t + 1], mesh.indices[3 * t + 2], planes, options,
                   cull, out);
     }
   }

@@ -22,8 +22,10 @@ struct GeometryOptions {
 // copy of ~160 bytes per triangle); a renderer keeps this between frames so that the storage is
 // reused (clear() keeps capacity) instead of freshly allocated and page-faulted every frame.
 struct SetupBuffers {
-  std::vector<Vec4d> clip;                           // one mesh's clip-space positions
-  std::vector<uint8_t> outcodes;                     // and their clip outcodes (clip.h)
+  // One mesh's vertices, transformed once: their clip outcodes (clip.h) and flags, and for those
+  // inside every plane their projected, snapped screen vertex (shared by the mesh's triangles).
+  std::vector<ScreenVertex> screen;
+  std::vector<uint8_t> flags;
   std::vector<std::vector<SetupTriangle>> chunks;    // capacity kept across frames
   size_t chunk_count = 0;                            // chunks in use this frame
 };

@@ -10,9 +10,8 @@
 
 namespace vlit::raster {
 
-static_assert(sizeof(Vec3f) == 3 * sizeof(float), "Vec3f is three packed floats, like Image::rgb");
 
-void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& background, Vec3f* image_rows) {
+void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& background, float* image_rows) {
   width_ = width;
   row_begin_ = row_begin;
   row_end_ = row_end;
@@ -21,14 +20,14 @@ void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& backg
   if (image_rows) {
     color_ = image_rows;
   } else {
-    own_color_.resize(n);
+    own_color_.resize(3 * n);
     color_ = own_color_.data();
   }
   // The first row element by element, the others copied from it (a plain memcpy is much faster
   // than filling 12-byte elements).
-  std::fill_n(color_, width, background);
+  for (int col = 0; col < width; ++col) store_color(size_t(col), background);
   for (int row = 1; row < row_end - row_begin; ++row)
-    std::memcpy(color_ + size_t(row) * size_t(width), color_, sizeof(Vec3f) * size_t(width));
+    std::memcpy(color_ + 3 * size_t(row) * size_t(width), color_, 3 * sizeof(float) * size_t(width));
 }
 
 void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int col_end) {
@@ -43,7 +42,7 @@ void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int 
     if (z > depth_[offset + col]) {
       depth_[offset + col] = z;
       const double w = 1.0 / inv_w;
-      color_[offset + col] = Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)};
+      store_color(offset + col, Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)});
     }
     depth += t.depth.ddx;
     inv_w += t.inv_w.ddx;
@@ -88,7 +87,7 @@ void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_b
       for (int e = 0; e < edge_count; ++e)
         on_wire = on_wire || std::abs(edges[e].at_begin + edges[e].step * (col - col_begin)) < wire_width;
       const double w = 1.0 / inv_w;
-      color_[offset + col] = on_wire ? wire_color : Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)};
+      store_color(offset + col, on_wire ? wire_color : Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)});
     }
     depth += t.depth.ddx;
     inv_w += t.inv_w.ddx;
@@ -103,7 +102,7 @@ void SampleBand::resolve(int samples_per_side, Image& image) const {
   if (s == 1) {  // one sample per pixel: the mean is the sample itself (bit-identical to the loop below)
     if (color_ == own_color_.data())
       for (int y = row_begin_; y < row_end_; ++y)
-        std::memcpy(image.pixel(0, y), color_ + size_t(y - row_begin_) * size_t(width_), sizeof(Vec3f) * size_t(image.width));
+        std::memcpy(image.pixel(0, y), color_ + 3 * size_t(y - row_begin_) * size_t(width_), 3 * sizeof(float) * size_t(image.width));
     return;  // else the samples were written into the image directly
   }
   const double inv_count = 1.0 / (double(s) * s);
@@ -111,11 +110,11 @@ void SampleBand::resolve(int samples_per_side, Image& image) const {
     for (int x = 0; x < image.width; ++x) {
       double sum[3] = {0, 0, 0};
       for (int sy = 0; sy < s; ++sy) {
-        const Vec3f* row = color_ + size_t(y * s + sy - row_begin_) * size_t(width_) + size_t(x) * s;
+        const float* row = color_ + 3 * (size_t(y * s + sy - row_begin_) * size_t(width_) + size_t(x) * s);
         for (int sx = 0; sx < s; ++sx) {
-          sum[0] += row[sx].x;
-          sum[1] += row[sx].y;
-          sum[2] += row[sx].z;
+          sum[0] += row[3 * sx];
+          sum[1] += row[3 * sx + 1];
+          sum[2] += row[3 * sx + 2];
         }
       }
       float* out = image.pixel(x, y);

@@ -17,7 +17,7 @@ class SampleBand {
   // background colour and the far depth. Reuses its storage across calls. With one sample per
   // pixel the colours can live in the image itself: pass image_rows = the image's pixel at
   // (0, row_begin) (the image must be `width` wide); resolve() then has nothing to do.
-  void reset(int width, int row_begin, int row_end, const Vec3f& background, Vec3f* image_rows = nullptr);
+  void reset(int width, int row_begin, int row_end, const Vec3f& background, float* image_rows = nullptr);
 
   // Depth-tests and writes the samples [col_begin, col_end) of sample row `row` covered by t.
   // A sample is written when its depth is strictly greater (nearer) than the stored one: on an
@@ -40,8 +40,15 @@ class SampleBand {
  private:
   int width_ = 0, row_begin_ = 0, row_end_ = 0;
   std::vector<float> depth_;  // reversed depth (greater is nearer), cleared to -1 (below any surface)
-  std::vector<Vec3f> own_color_;
-  Vec3f* color_ = nullptr;  // own_color_ or rows of the image
+  void store_color(size_t sample, const Vec3f& c) {
+    float* p = color_ + 3 * sample;
+    p[0] = c.x;
+    p[1] = c.y;
+    p[2] = c.z;
+  }
+
+  std::vector<float> own_color_;  // 3 floats per sample, the layout of Image::rgb
+  float* color_ = nullptr;        // own_color_ or rows of the image
 };
 
 }  // namespace vlit::raster

@@ -111,7 +111,7 @@ void render(const std::vector<DrawMesh>& meshes, const Camera& camera, const Ren
     for (int b = 0; b < band_count; ++b) {
       const int y_end = std::min(options.height, (b + 1) * band_rows);
       // One sample per pixel: the band's colours are the image rows themselves (no copy).
-      Vec3f* image_rows = side == 1 ? reinterpret_cast<Vec3f*>(image.pixel(0, b * band_rows)) : nullptr;
+      float* image_rows = side == 1 ? image.pixel(0, b * band_rows) : nullptr;
       band.reset(geometry.grid_width, b * band_rows * side, y_end * side, options.background, image_rows);
       for (const SetupTriangle* triangle : bins[b]) {
         const SetupTriangle& t = *triangle;

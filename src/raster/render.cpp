@@ -44,7 +44,7 @@ std::string validate_render_options(const RenderOptions& options) {
 
 struct RenderWorkspace::Buffers {
   SetupBuffers setup;
-  std::vector<std::vector<const SetupTriangle*>> bins;  // per band, in draw order
+  std::vector<std::vector<const DrawEntry*>> bins;  // per band, in draw order
   std::vector<SampleBand> bands;                        // per thread
 };
 
@@ -96,12 +96,17 @@ void render(const std::vector<DrawMesh>& meshes, const Camera& camera, const Ren
   const double wire_width_samples = options.wireframe.enabled ? options.wireframe.width * side : 0.0;
 
   // Bin the triangles by band, keeping draw order, so a band never looks at the others.
-  std::vector<std::vector<const SetupTriangle*>>& bins = buffers.bins;
+  std::vector<std::vector<const DrawEntry*>>& bins = buffers.bins;
   if (bins.size() < size_t(band_count)) bins.resize(band_count);
   for (int b = 0; b < band_count; ++b) bins[b].clear();
-  for (size_t c = 0; c < buffers.setup.chunk_count; ++c)
-    for (const SetupTriangle& t : buffers.setup.chunks[c])
-      for (int b = t.row_begin / band_sample_rows; b <= (t.row_end - 1) / band_sample_rows; ++b) bins[b].push_back(&t);
+  const SetupBuffers& setup = buffers.setup;
+  for (size_t c = 0; c < setup.chunk_count; ++c)
+    for (const DrawEntry& e : setup.chunks[c].entries) {
+      int row_begin = 0, row_end = 0;
+      setup.rows(e, geometry.grid_height, &row_begin, &row_end);
+      if (row_begin >= row_end) continue;
+      for (int b = row_begin / band_sample_rows; b <= (row_end - 1) / band_sample_rows; ++b) bins[b].push_back(&e);
+    }
 
   if (buffers.bands.size() < size_t(omp_get_max_threads())) buffers.bands.resize(omp_get_max_threads());
 #pragma omp parallel
@@ -113,7 +118,11 @@ void render(const std::vector<DrawMesh>& meshes, const Camera& camera, const Ren
       // One sample per pixel: the band's colours are the image rows themselves (no copy).
       float* image_rows = side == 1 ? image.pixel(0, b * band_rows) : nullptr;
       band.reset(geometry.grid_width, b * band_rows * side, y_end * side, options.background, image_rows);
-      for (const SetupTriangle* triangle : bins[b]) {
+      SetupTriangle scratch;
+      for (const DrawEntry* entry : bins[b]) {
+        // Deferred triangles are set up here, by every band they overlap (same bits each time).
+        const SetupTriangle* triangle = setup.triangle(*entry, geometry.grid_width, geometry.grid_height, &scratch);
+        if (!triangle) continue;
         const SetupTriangle& t = *triangle;
         if (wire_width_samples > 0)
           scan_triangle(t, band.row_begin(), band.row_end(), geometry.grid_width, [&](int row, int col_begin, int col_end) {

@@ -17,12 +17,13 @@ void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& backg
   row_end_ = row_end;
   const size_t n = size_t(width) * size_t(row_end - row_begin);
   depth_.assign(n, -1.0f);
-  if (image_rows) {
+  background_ = background;
+  if (image_rows) {  // the image is written once: covered samples by shading, the rest by resolve()
     color_ = image_rows;
-  } else {
-    own_color_.resize(3 * n);
-    color_ = own_color_.data();
+    return;
   }
+  own_color_.resize(3 * n);
+  color_ = own_color_.data();
   // The first row element by element, the others copied from it (a plain memcpy is much faster
   // than filling 12-byte elements).
   for (int col = 0; col < width; ++col) store_color(size_t(col), background);
@@ -97,13 +98,18 @@ void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_b
   }
 }
 
-void SampleBand::resolve(int samples_per_side, Image& image) const {
+void SampleBand::resolve(int samples_per_side, Image& image) {
   const int s = samples_per_side;
   if (s == 1) {  // one sample per pixel: the mean is the sample itself (bit-identical to the loop below)
-    if (color_ == own_color_.data())
+    if (color_ == own_color_.data()) {
       for (int y = row_begin_; y < row_end_; ++y)
         std::memcpy(image.pixel(0, y), color_ + 3 * size_t(y - row_begin_) * size_t(width_), 3 * sizeof(float) * size_t(image.width));
-    return;  // else the samples were written into the image directly
+    } else {  // shaded samples are in the image already; the untouched ones get the background
+      const size_t n = size_t(width_) * size_t(row_end_ - row_begin_);
+      for (size_t i = 0; i < n; ++i)
+        if (depth_[i] == -1.0f) store_color(i, background_);  // no surface stores a depth <= -1
+    }
+    return;
   }
   const double inv_count = 1.0 / (double(s) * s);
   for (int y = row_begin_ / s; y < row_end_ / s; ++y)

@@ -16,7 +16,7 @@ class SampleBand {
   // Holds sample rows [row_begin, row_end) of a sample grid `width` samples wide, cleared to the
   // background colour and the far depth. Reuses its storage across calls. With one sample per
   // pixel the colours can live in the image itself: pass image_rows = the image's pixel at
-  // (0, row_begin) (the image must be `width` wide); resolve() then has nothing to do.
+  // (0, row_begin) (the image must be `width` wide); resolve() then only fills in the background.
   void reset(int width, int row_begin, int row_end, const Vec3f& background, float* image_rows = nullptr);
 
   // Depth-tests and writes the samples [col_begin, col_end) of sample row `row` covered by t.
@@ -32,7 +32,8 @@ class SampleBand {
 
   // Averages each samples_per_side x samples_per_side block (box filter, linear RGB) into the
   // image pixels of this band. The band must start and end on pixel boundaries.
-  void resolve(int samples_per_side, Image& image) const;
+  // With image_rows (see reset), writes the background into the samples no triangle covered.
+  void resolve(int samples_per_side, Image& image);
 
   int row_begin() const { return row_begin_; }
   int row_end() const { return row_end_; }
@@ -49,6 +50,7 @@ class SampleBand {
 
   std::vector<float> own_color_;  // 3 floats per sample, the layout of Image::rgb
   float* color_ = nullptr;        // own_color_ or rows of the image
+  Vec3f background_;
 };
 
 }  // namespace vlit::raster

@@ -1190,7 +1190,8 @@ EndToEnd end_to_end(const Options& o) {
   };
   linear({-1.2, 1.3, 0.8}, {1.2, 1.3, 0.8}, 2, 1);      // tube above the front
   linear({1.6, -1, 0.4}, {1.6, 1.2, -0.2}, 1.5, 1);     // vertical tube at the side, falloff 1.5
-  area({{-0.8, 1.8, -0.8}, {-0.8, 1.8, 0.8}, {0.8, 1.8, 0.8}, {0.8, 1.8, -0.8}}, 1);  // ceiling panel facing down
+  // Ceiling panel facing down: counter-clockwise seen from below (docs/lights-json.md).
+  area({{0.8, 1.8, -0.8}, {0.8, 1.8, 0.8}, {-0.8, 1.8, 0.8}, {-0.8, 1.8, -0.8}}, 1);
   area({{-1.5, -0.6, 1.9}, {-0.3, -0.6, 1.9}, {-0.9, 0.6, 1.9}}, 1);                  // front triangle facing -z... flipped below
   std::reverse(scene.lights.back().polygon.begin(), scene.lights.back().polygon.end());
   const Vec3d eye = c + Vec3d{0.3, 0.4, 3} * s;
@@ -1488,6 +1489,9 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
      << "- **Float**: the same method instantiated with T = float. The kernels (closed forms, quadratures, area "
         "kernels) compute float in double internally and round once; the baselines written for this report (fixed "
         "Gauss-Legendre, Monte Carlo: `bench/accuracy_methods.h`) really compute in float.\n"
+     << "- **Rv** of the linear cases is rounded to float with |Rv| ≤ 1: a rounded unit "
+        "vector can be 1e-8 longer than 1, and with m = 1e4 the kernels' clamp cos α ≤ 1 then differs from the "
+        "reference's literal integrand by ~1e-6 (docs/linear-lights.md, \"Rv a little longer than 1\").\n"
      << "- **Ordinary cases**: linear — " << (o.quick ? 24 : 1024) << " seeded segments at distance 1 from P, length "
         "0.1..10, normals and Rv biased towards the light, m log-uniform in [1, 1000]; area — " << (o.quick ? 8 : 256)
      << " convex 3..6-gons of size 0.2..1.5 at distance 1..3; disk — " << (o.quick ? 6 : 96)

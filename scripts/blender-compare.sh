@@ -33,11 +33,11 @@ rm -rf "$out"
 mkdir -p "$out"
 "$build/bench/accuracy_report" --asset "$asset" --write-blender-lights "$out/lights.json"
 echo "blender-compare: calibration (one light at a time over a plane) ..." >&2
-blender -b --factory-startup --python bench/blender_bake.py -- --calibrate --threads 1 --out "$out" \
+blender -b --factory-startup --python-exit-code 1 --python bench/blender_bake.py -- --calibrate --threads 1 --out "$out" \
   > "$out/blender-calibrate.log" 2>&1 || { echo "blender-compare: calibration failed, see $out/blender-calibrate.log" >&2; exit 1; }
 grep '^blender_bake:' "$out/blender-calibrate.log" >&2
 echo "blender-compare: Cycles bakes of $(basename "$asset"), samples $samples, one thread ..." >&2
-blender -b --factory-startup --python bench/blender_bake.py -- --asset "$asset" --lights "$out/lights.json" \
+blender -b --factory-startup --python-exit-code 1 --python bench/blender_bake.py -- --asset "$asset" --lights "$out/lights.json" \
   --samples "$samples" --threads 1 --out "$out" > "$out/blender-bake.log" 2>&1 \
   || { echo "blender-compare: Cycles bake failed, see $out/blender-bake.log" >&2; exit 1; }
 grep '^blender_bake:' "$out/blender-bake.log" >&2

@@ -269,6 +269,14 @@ def corner_records(meshes):
 
 
 def run_asset(args):
+    for path in (args["asset"], args["lights"]):
+        if not os.path.isfile(path):
+            sys.exit("blender_bake.py: %s: no such file" % path)
+    try:
+        with open(args["lights"]) as f:
+            lights = json.load(f)["lights"]
+    except (ValueError, KeyError, TypeError) as e:
+        sys.exit("blender_bake.py: %s: not a LIGHTS.json with a \"lights\" array (%s)" % (args["lights"], e))
     bpy.ops.wm.read_factory_settings(use_empty=True)
     fix_numpy_bool_alias()
     t0 = time.perf_counter()
@@ -276,10 +284,11 @@ def run_asset(args):
     import_s = time.perf_counter() - t0
     for o in [o for o in bpy.context.scene.objects if o.type == "LIGHT"]:
         bpy.data.objects.remove(o)
-    with open(args["lights"]) as f:
-        lights = json.load(f)["lights"]
     for i, light in enumerate(lights):
-        add_vlit_light(light, i)
+        try:
+            add_vlit_light(light, i)
+        except (KeyError, TypeError, ValueError) as e:
+            sys.exit("blender_bake.py: %s: /lights/%d: bad or missing property %s" % (args["lights"], i, e))
     setup_cycles(int(args["threads"]))
     meshes = prepare_meshes()
     os.makedirs(args["out"], exist_ok=True)

@@ -1080,6 +1080,12 @@ CyclesComparison cycles_comparison(const Options& o) {
        << fmt(e.med_rel) << " |\n";
     cdat << "\"" << run.samples << "\" " << run.seconds << " " << e.max_rel_to_max << "\n";
   }
+  md << "\nCycles' scene has " << as_point_chains(lights, kCyclesTubePoints).size()
+     << " lights (each tube is " << kCyclesTubePoints
+     << " point lights, the only stand-in with vlit's emission pattern: see `bench/blender_bake.py`); a Cycles "
+        "sample evaluates one of them, so the tubes' points share the samples with the panel and the point light. "
+        "A tube as one thin area light would need fewer samples but converges to another answer (its cos θ_l "
+        "emission).\n\n";
   // Time ratio. Cycles' error falls as 1/sqrt(samples) (until the point-chain floor); vlit's
   // default is more accurate than every Cycles point, so Cycles' time at its most accurate point
   // over vlit's time is a lower bound of the ratio at equal error; the extrapolation to the error

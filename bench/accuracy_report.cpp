@@ -1670,6 +1670,10 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
      << "- **Area contour, \"thin 1e-6\"**: 1.9e-5 relative in double, far above rounding; kernel vs reference "
         "not yet determined.\n\n";
   md << "## Not done\n\n"
+     << "- **Cycles comparison, lights left out**: it covers what Cycles represents exactly (point lights, "
+        "rectangular area lights, linear lights of falloff 2 as point chains). Spots (Cycles 3.4 multiplies its spot "
+        "by cos ψ to the axis; `--calibrate` shows it), other polygons, disks, two-sided lights and falloff ≠ 2 are "
+        "not compared; nor shadows (vlit's bake has none).\n"
      << "- **Disk specular, hardest stiff cases** (P 1e-4 from the rim, radius 1e6 seen off-centre, m = 1e4): the "
         "long-double reference (`bench/accuracy_disk_reference.h`) takes 2-40 s per case there, so only the diffuse is "
         "checked on them.\n"

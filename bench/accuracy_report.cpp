@@ -1085,7 +1085,7 @@ CyclesComparison cycles_comparison(const Options& o) {
      << " point lights, the only stand-in with vlit's emission pattern: see `bench/blender_bake.py`); a Cycles "
         "sample evaluates one of them, so the tubes' points share the samples with the panel and the point light. "
         "A tube as one thin area light would need fewer samples but converges to another answer (its cos θ_l "
-        "emission).\n\n";
+        "emission).\n";
   // Time ratio. Cycles' error falls as 1/sqrt(samples) (until the point-chain floor); vlit's
   // default is more accurate than every Cycles point, so Cycles' time at its most accurate point
   // over vlit's time is a lower bound of the ratio at equal error; the extrapolation to the error
@@ -1116,11 +1116,11 @@ CyclesComparison cycles_comparison(const Options& o) {
                 "(its time at its best point over vlit's, vlit being more accurate there). Between Cycles' two most "
                 "accurate points the median error falls as N^%.2f (Monte Carlo: N^-0.5; the max as N^%.2f, driven by "
                 "rare outliers). By N^-0.5 from its best point, Cycles would need ~%.2g samples, ~%.2g s, to reach "
-                "1.5e-5 (the unorm16 step): **~%.0e times** vlit's time. The floor of this comparison (vlit on Cycles' "
-                "point chains against the reference) is %s: below that, Cycles' error would be the tubes' "
-                "discretisation, not noise.\n",
+                "1.5e-5 (the unorm16 step): **~%.0e times** vlit's time, if its stand-in for the tubes allowed it: "
+                "the %d-point chains' own error (vlit on Cycles' scene against the reference) is %s, so a finer chain "
+                "would be needed, with more lights sharing the samples.\n",
                 cy.runs[best].samples, fmt(e_best).c_str(), cy.runs[best].seconds, vlit_default_err.c_str(), seconds[1],
-                out.ratio_at_best, slope_med, slope_max, n_needed, t_needed, t_needed / seconds[1],
+                out.ratio_at_best, slope_med, slope_max, n_needed, t_needed, t_needed / seconds[1], kCyclesTubePoints,
                 fmt(floor_err.max_rel_to_max).c_str());
   md << line;
   std::snprintf(line, sizeof line,
@@ -1139,7 +1139,8 @@ CyclesComparison cycles_comparison(const Options& o) {
     std::ostringstream s;
     s << cli.rdbuf();
     md << "\nThe same bake with the command line (`scripts/blender-compare.sh`: `vlit bake --explain --color-format "
-          "float`, all cores), stage times:\n\n```\n" << s.str() << "```\n";
+          "float`, all cores), stage times of successive runs (the machine is shared: their spread is other "
+          "processes' load, not vlit's):\n\n```\n" << s.str() << "```\n";
   }
   out.plot = ", \\\n     'data/end-to-end-cycles.dat' using 2:3 with linespoints pt 9 ps 1.5 title 'Cycles (comparison lights)', "
              "\\\n     '' using 2:3:1 with labels offset 1,-0.7 left font ',8' notitle, "

@@ -8,7 +8,7 @@
 # Writes into OUT_DIR: lights.json (the comparison lights, from accuracy_report), calibration.txt
 # (bench/blender_bake.py --calibrate: each light mapping against a value computed by hand),
 # cycles-S.txt and cycles-times.txt (the Cycles bakes, S samples each, one thread) and
-# vlit-bake.txt (stage times of `vlit bake --explain` on the same asset and lights).
+# vlit-bake.txt (stage times of `vlit bake --explain` on the same asset and lights, three runs).
 # scripts/accuracy-report.sh runs this when blender is installed and reads OUT_DIR; the report
 # program computes the errors. Samples: VLIT_CYCLES_SAMPLES (default 1,4,16,64,256,1024).
 # Exit status 3 when blender is not installed (nothing written).
@@ -41,7 +41,10 @@ blender -b --factory-startup --python-exit-code 1 --python bench/blender_bake.py
   --samples "$samples" --threads 1 --out "$out" > "$out/blender-bake.log" 2>&1 \
   || { echo "blender-compare: Cycles bake failed, see $out/blender-bake.log" >&2; exit 1; }
 grep '^blender_bake:' "$out/blender-bake.log" >&2
-"$build/vlit" bake "$asset" --lights "$out/lights.json" --no-file-lights --color-format float --explain --quiet \
-  -o "$out/vlit-baked.glb" | grep '^time:' > "$out/vlit-bake.txt"
+: > "$out/vlit-bake.txt"
+for run in 1 2 3; do
+  "$build/vlit" bake "$asset" --lights "$out/lights.json" --no-file-lights --color-format float --explain --quiet \
+    -o "$out/vlit-baked.glb" | grep '^time:' >> "$out/vlit-bake.txt"
+done
 cat "$out/vlit-bake.txt" >&2
 echo "blender-compare: wrote $out" >&2

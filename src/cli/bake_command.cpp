@@ -36,6 +36,7 @@ struct BakeArgs {
   bool quiet = false;
   bool explain = false;
   std::size_t max_vertices = SceneLimits{}.max_vertices;
+  std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
 };
 
 // An input argument as a list of glTF files: a file as is, a directory searched recursively, a
@@ -93,7 +94,7 @@ void print_summary(const std::string& output, const BakeFileResult& r, const std
 }
 
 int run_bake(const BakeArgs& args) {
-  set_default_scene_limits({args.max_vertices});
+  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   std::vector<std::pair<std::string, fs::path>> files;
@@ -186,13 +187,16 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_option("--exposure", args->exposure, "Multiplier applied to the light before encoding (default 1)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
-  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
+  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual, EXT_lights_area, VLIT_lights_linear, emissive geometry)");
   cmd->add_flag("--explain", args->explain,
                 "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
   cmd->add_option("--max-vertices", args->max_vertices,
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
+                  "Keep at most this many lights made from emissive geometry, the brightest (default 256)")
+      ->check(CLI::NonNegativeNumber);
   cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.\n"
               "Outputs are written atomically; a failed or interrupted file leaves no output. A batch keeps going\n"
               "when a file fails and exits 1 with a summary.");

@@ -330,3 +330,38 @@ TEST_CASE("malformed light extensions: one-line errors naming the file and the p
     }
   }
 }
+
+TEST_CASE("receivers on an emissive polygon's corner, edge or plane, or on an emissive line: finite light") {
+  // Vertices of another primitive touching the lights: at a corner, on an edge, inside in the
+  // plane, each with normals along, against and across the emission; and on the line.
+  Scene s;
+  ScenePrimitive p;
+  const std::vector<Vec3d> points = {{0, 0, 0}, {0.5, 0, 0}, {0.5, 0.5, 0}, {2, 0, 0}, {0.25, 0, 0}};
+  const std::vector<Vec3d> normals = {{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {0, std::sqrt(0.5), -std::sqrt(0.5)}};
+  for (const Vec3d& q : points)
+    for (const Vec3d& n : normals) {
+      p.positions.push_back(q);
+      p.normals.push_back(n);
+    }
+  s.primitives.push_back(p);
+  LightSource area;
+  area.type = LightType::kArea;
+  area.polygon = {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}};  // emits toward -Z
+  LightSource line;
+  line.type = LightType::kLinear;
+  line.from = {0, 0, 0};
+  line.to = {1, 0, 0};
+  for (bool two_sided : {false, true}) {
+    area.two_sided = two_sided;
+    s.lights = {area, line};
+    LightingRequest request;
+    request.eye = Vec3d{0.3, 0.2, -1};
+    request.shade.specular.method = SpecularMethod::kExact;
+    const auto light = light_scene_vertices(s, request);
+    for (std::size_t v = 0; v < light[0].diffuse.size(); ++v) {
+      CAPTURE(v);
+      CHECK(is_finite(light[0].diffuse[v]));
+      CHECK(is_finite(light[0].specular[v]));
+    }
+  }
+}

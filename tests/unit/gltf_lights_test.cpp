@@ -3,7 +3,9 @@
 // rectangle and a disk, the integral of a line source) or the equivalent LIGHTS.json light.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 #include "bake/light_vertices.h"
 #include "core/input_error.h"
@@ -364,4 +366,42 @@ TEST_CASE("receivers on an emissive polygon's corner, edge or plane, or on an em
       CHECK(is_finite(light[0].specular[v]));
     }
   }
+}
+
+TEST_CASE("real assets: Box under an EXT_lights_area rect equals LIGHTS.json; LightsPunctualLamp's textured emission is no light") {
+  const std::string shared = VLIT_SHARED_DIR;
+  if (!std::filesystem::exists(shared + "/assets/gltf/Box")) {
+    MESSAGE("../shared/assets not found; skipped");
+    return;
+  }
+  GltfFile box = load_gltf_file(shared + "/assets/gltf/Box/glTF/Box.gltf");
+  // A 1.5 x 1 rect 2 above the box's centre, turned to face down (-90 degrees about X), 5 nits.
+  box.model.extensions["EXT_lights_area"] = obj({{"lights", arr({rect_light(5, 1, 1.5)})}});
+  tinygltf::Node node;
+  node.translation = {0, 2, 0};
+  node.rotation = {-std::sqrt(0.5), 0, 0, std::sqrt(0.5)};
+  node.extensions["EXT_lights_area"] = obj({{"light", Value(0)}});
+  box.model.nodes.push_back(node);
+  box.model.scenes[0].nodes.push_back(static_cast<int>(box.model.nodes.size()) - 1);
+  std::vector<std::string> warnings;
+  const Scene s = build_scene(box, warnings);
+  REQUIRE(s.lights.size() == 1);
+  Scene json = s;
+  // Local (x, y) -> world (x, -z) after the rotation; counter-clockwise seen from below.
+  json.lights = parse_lights_json(R"({"lights": [{"type": "area", "intensity": 5,
+      "polygon": [[-0.75, 2, 0.5], [-0.75, 2, -0.5], [0.75, 2, -0.5], [0.75, 2, 0.5]]}]})", "l.json");
+  const auto a = light_scene_vertices(s, LightingRequest{}), b = light_scene_vertices(json, LightingRequest{});
+  REQUIRE(a[0].diffuse.size() == 24);
+  double lit = 0;
+  for (std::size_t v = 0; v < 24; ++v) {
+    CAPTURE(v);
+    CHECK(a[0].diffuse[v].x == doctest::Approx(b[0].diffuse[v].x).epsilon(1e-9));
+    lit += a[0].diffuse[v].x;
+  }
+  CHECK(lit > 0);
+
+  warnings.clear();
+  const Scene lamp = build_scene(load_gltf_file(shared + "/assets/gltf/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf"), warnings);
+  CHECK(lamp.lights.size() == 5);  // its KHR_lights_punctual lights only
+  CHECK(std::count_if(warnings.begin(), warnings.end(), [](const std::string& w) { return w.find("emission comes from a texture") != std::string::npos; }) == 2);
 }

@@ -6,9 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
+#include "bake/bake_file.h"
 #include "bake/light_vertices.h"
 #include "core/input_error.h"
+#include "gltf/accessor_reader.h"
 #include "gltf/gltf_scene.h"
 #include "io/lights_json.h"
 #include "support/gltf_builder.h"
@@ -404,4 +407,38 @@ TEST_CASE("real assets: Box under an EXT_lights_area rect equals LIGHTS.json; Li
   const Scene lamp = build_scene(load_gltf_file(shared + "/assets/gltf/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf"), warnings);
   CHECK(lamp.lights.size() == 5);  // its KHR_lights_punctual lights only
   CHECK(std::count_if(warnings.begin(), warnings.end(), [](const std::string& w) { return w.find("emission comes from a texture") != std::string::npos; }) == 2);
+}
+
+TEST_CASE("baked COLOR_0: a file's rect light and emissive line equal their LIGHTS.json twins, code for code") {
+  // The same triangle baked twice: once lit by the file's EXT_lights_area rect and emissive line,
+  // once by LIGHTS.json with the equivalent area and linear lights (--no-file-lights).
+  GltfBuilder b;
+  add_receiver(b);
+  add_root_lights(b, "EXT_lights_area", {rect_light(0.2, 1, 2)});
+  add_light_node(b, "EXT_lights_area", 0, {0, 0, 2});
+  const int mat = b.add_material({1, 1, 1, 1}, 0, 1);
+  b.model().materials[mat].emissiveFactor = {0.1, 0.05, 0.025};
+  b.add_node(b.add_mesh({-1, 0, 1, 1, 0, 1}, {}, {0, 1}, TINYGLTF_MODE_LINE, mat));
+  const auto dir = vlit::test::temp_dir("baked-twins");
+  const std::string in = b.write((dir / "in.glb").string());
+  const std::string lights = (dir / "lights.json").string();
+  std::ofstream(lights) << R"({"lights": [
+    {"type": "area", "intensity": 0.2, "polygon": [[-1,-0.5,2],[-1,0.5,2],[1,0.5,2],[1,-0.5,2]]},
+    {"type": "linear", "from": [-1,0,1], "to": [1,0,1], "intensity": 2, "color": [0.1, 0.05, 0.025]}]})";
+  BakeFileOptions file_lights, json_lights;
+  json_lights.lights_path = lights;
+  json_lights.use_file_lights = false;
+  const auto a = bake_file(in, (dir / "a.glb").string(), file_lights);
+  const auto c = bake_file(in, (dir / "b.glb").string(), json_lights);
+  CHECK(a.lights == 2);
+  CHECK(c.lights == 2);
+  auto colors = [](const std::string& path) {
+    const GltfFile f = load_gltf_file(path);
+    return read_accessor_as_doubles(f.model, f.model.meshes[0].primitives[0].attributes.at("COLOR_0"), path);
+  };
+  const auto ca = colors((dir / "a.glb").string()), cb = colors((dir / "b.glb").string());
+  REQUIRE(ca.size() == 12);
+  CHECK(ca == cb);
+  CHECK(ca[0] > 0.1);  // lit, well inside (0, 1)
+  CHECK(ca[0] < 1);
 }

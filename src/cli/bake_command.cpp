@@ -229,7 +229,7 @@ Runner add_bake_command(CLI::App& app) {
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
-                  "Keep at most this many lights made from emissive geometry, the brightest (default 256)")
+                  "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
       ->check(CLI::NonNegativeNumber);
   cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.\n"
               "Outputs are written atomically; a failed or interrupted file leaves no output. A batch keeps going\n"

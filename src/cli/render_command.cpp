@@ -160,7 +160,7 @@ Runner add_render_command(CLI::App& app) {
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
-                  "Keep at most this many lights made from emissive geometry, the brightest (default 256)")
+                  "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-pixels", args->max_pixels, "Refuse an image larger than this many pixels (default 67108864)")
       ->check(CLI::PositiveNumber);

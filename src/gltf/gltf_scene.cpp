@@ -62,12 +62,54 @@ std::string limit_message(const char* what, std::size_t limit) {
          " (the limit that protects the machine; raise it with --max-vertices)";
 }
 
-// What build_scene collects besides the scene: the lights of emissive geometry (ranked and limited
-// at the end) and the state of the limits.
+// The brightest lights of the file's emissive geometry, at most `limit` at any time, so an asset
+// with a million emissive triangles never holds a million lights: a heap whose front is the
+// weakest kept light (by luminous flux; on equal flux the later one in the file is weaker).
+class EmissiveLights {
+ public:
+  explicit EmissiveLights(std::size_t limit) : limit_(limit) {}
+
+  void add(LightSource light) {
+    Ranked r{luminous_flux(light), seen_++, std::move(light)};
+    if (kept_.size() < limit_) {
+      kept_.push_back(std::move(r));
+      std::push_heap(kept_.begin(), kept_.end(), stronger);
+    } else if (!kept_.empty() && stronger(r, kept_.front())) {
+      std::pop_heap(kept_.begin(), kept_.end(), stronger);
+      kept_.back() = std::move(r);
+      std::push_heap(kept_.begin(), kept_.end(), stronger);
+    }
+  }
+  std::size_t seen() const { return seen_; }
+  // File order when nothing was dropped, brightest first otherwise.
+  std::vector<LightSource> take() {
+    if (seen_ > limit_) std::sort(kept_.begin(), kept_.end(), stronger);
+    else std::sort(kept_.begin(), kept_.end(), [](const Ranked& a, const Ranked& b) { return a.order < b.order; });
+    std::vector<LightSource> out;
+    for (auto& r : kept_) out.push_back(std::move(r.light));
+    return out;
+  }
+
+ private:
+  struct Ranked {
+    double flux;
+    std::size_t order;
+    LightSource light;
+  };
+  static bool stronger(const Ranked& a, const Ranked& b) {
+    return a.flux > b.flux || (a.flux == b.flux && a.order < b.order);
+  }
+  std::size_t limit_, seen_ = 0;
+  std::vector<Ranked> kept_;
+};
+
+// What build_scene collects besides the scene: the lights of emissive geometry (ranked and limited)
+// and the state of the limits.
 struct BuildState {
+  explicit BuildState(const SceneLimits& limits) : emissive_lights(limits.max_emissive_lights) {}
   bool file_lights = true;
   std::size_t vertices_so_far = 0, corners_so_far = 0;
-  std::vector<LightSource> emissive_lights;
+  EmissiveLights emissive_lights;
   PlanarMergeStats merge;  // summed over primitives, for the message about merging
 };
 
@@ -105,7 +147,7 @@ void read_emissive_lines(const GltfFile& file, const tinygltf::Primitive& prim, 
   for (std::size_t i = 0; i < vertex_count; ++i) positions[i] = world.apply_point(vec3_at(pos, i));
   auto lights = emissive_line_lights(positions, line_segments(mode, draw_order), material, file.path + ": " + where);
   for (auto& l : lights)
-    if (is_finite(l.from) && is_finite(l.to)) state.emissive_lights.push_back(std::move(l));
+    if (is_finite(l.from) && is_finite(l.to)) state.emissive_lights.add(std::move(l));
 }
 
 void read_primitive(const GltfFile& file, int node_index, int mesh_index, int prim_index, const Affine& world,
@@ -229,7 +271,7 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
     state.merge.triangles += merge.triangles;
     state.merge.regions += merge.regions;
     state.merge.merged_regions += merge.merged_regions;
-    for (auto& l : lights) state.emissive_lights.push_back(std::move(l));
+    for (auto& l : lights) state.emissive_lights.add(std::move(l));
   }
   scene.primitives.push_back(std::move(out));
 }
@@ -360,7 +402,7 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
 
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits, bool file_lights) {
   const tinygltf::Model& model = file.model;
-  BuildState state;
+  BuildState state(limits);
   state.file_lights = file_lights;
   Scene scene;
   for (std::size_t m = 0; m < model.materials.size(); ++m) scene.materials.push_back(read_material(file, m, warnings));
@@ -432,23 +474,15 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
     }
 
   // Emissive geometry: the brightest max_emissive_lights lights, by luminous flux.
-  auto& emissive = state.emissive_lights;
-  if (emissive.size() > limits.max_emissive_lights) {
-    std::vector<std::pair<double, std::size_t>> ranked;
-    for (std::size_t i = 0; i < emissive.size(); ++i) ranked.emplace_back(-luminous_flux(emissive[i]), i);
-    std::stable_sort(ranked.begin(), ranked.end());
-    std::vector<LightSource> kept;
-    for (std::size_t i = 0; i < limits.max_emissive_lights; ++i) kept.push_back(std::move(emissive[ranked[i].second]));
-    warnings.push_back(file.path + ": emissive geometry makes " + std::to_string(emissive.size()) + " lights; kept the " +
-                       std::to_string(limits.max_emissive_lights) +
+  if (state.emissive_lights.seen() > limits.max_emissive_lights)
+    warnings.push_back(file.path + ": emissive geometry makes " + std::to_string(state.emissive_lights.seen()) +
+                       " lights; kept the " + std::to_string(limits.max_emissive_lights) +
                        " brightest (the limit that keeps a bake fast; raise it with --max-emissive-lights)");
-    emissive = std::move(kept);
-  }
   if (state.merge.regions > state.merge.merged_regions)
     warnings.push_back(file.path + ": " + std::to_string(state.merge.regions - state.merge.merged_regions) +
                        " coplanar emissive regions have holes, pinched or long boundaries; their triangles are lit "
                        "as separate area lights (exact, slower)");
-  for (auto& l : emissive) scene.lights.push_back(std::move(l));
+  for (auto& l : state.emissive_lights.take()) scene.lights.push_back(std::move(l));
   return scene;
 }
 

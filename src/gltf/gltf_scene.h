@@ -19,7 +19,7 @@ struct SceneLimits {
   // Lights made from emissive geometry (one per merged polygon, triangle or line segment): beyond
   // this, the brightest are kept with a warning, so an asset with thousands of emissive
   // triangles does not make a bake thousands of times slower.
-  std::size_t max_emissive_lights = 256;
+  std::size_t max_emissive_lights = 64;
   // Triangle corners (3 per triangle) may be at most kCornersPerVertex x max_vertices.
   static constexpr std::size_t kCornersPerVertex = 6;
 };

@@ -30,6 +30,7 @@ struct RenderArgs {
   double wire_width = raster::WireframeOptions{}.width;
   bool no_file_lights = false;
   std::size_t max_vertices = SceneLimits{}.max_vertices;
+  std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
 };
 
@@ -82,7 +83,7 @@ int run_render(const RenderArgs& args) {
     throw InputError(args.output, std::to_string(args.width) + " x " + std::to_string(args.height) +
                                       " pixels exceed the limit of " + std::to_string(args.max_pixels) +
                                       " (raise it with --max-pixels)");
-  set_default_scene_limits({args.max_vertices});
+  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
   LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
   for (const auto& w : loaded.warnings) print_warning(w);
   loaded.gltf.reset();  // the glTF document (with its buffers) is for bake's output, not needed here
@@ -191,7 +192,7 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--exposure", args->exposure, "Multiplier applied before sRGB encoding (default 1)")->check(CLI::PositiveNumber);
   cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
-  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
+  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual, EXT_lights_area, VLIT_lights_linear, emissive geometry)");
   cmd->add_option("--specular", args->specular,
                   "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
   cmd->add_option("--view", args->view,
@@ -207,6 +208,9 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--max-vertices", args->max_vertices,
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
+                  "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-pixels", args->max_pixels, "Refuse an image larger than this many pixels (default 67108864)")
       ->check(CLI::PositiveNumber);
   cmd->footer("The camera is the glTF's first camera if it has one, otherwise a 3/4 view framing the whole scene.");

@@ -144,10 +144,8 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
   if (!plan.shadows_requested) {
     s << "plan: shadows off\n";
   } else {
-    std::size_t triangles = 0;
-    for (const ScenePrimitive& p : scene.primitives) triangles += p.triangles.size() / 3;
     s << "plan: shadows on for " << plan.shadowed_pairs << " of " << plan.pairs_kept << " lit pairs";
-    if (plan.needs_occluders) s << "; BVH over " << triangles << " triangles";
+    if (plan.needs_occluders) s << "; BVH over " << plan.occluder_triangles << " triangles";
     else s << "; no BVH (nothing can occlude)";
     s << "\n";
   }

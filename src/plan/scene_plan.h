@@ -37,6 +37,7 @@ struct ScenePlan {
   bool shadows_requested = false;
   bool needs_occluders = false;                       // some pair is shadowed: build the BVH
   std::size_t shadowed_pairs = 0;
+  std::size_t occluder_triangles = 0;                 // triangles of the scene when planned
   ShadeOptions shade;                                 // with_specular already resolved
   std::vector<std::string> skipped;                   // one line per skipped light or pair, why
   std::size_t pairs_total = 0, pairs_kept = 0;

@@ -65,6 +65,8 @@ Aabb between(const LightSource& l, const Aabb& receiver, const Aabb& scene) {
 
 void plan_shadows(const Scene& scene, const std::vector<const LightSource*>& kept, bool shadows_on, ScenePlan& plan) {
   plan.shadows_requested = shadows_on;
+  plan.occluder_triangles = 0;
+  for (const ScenePrimitive& p : scene.primitives) plan.occluder_triangles += p.triangles.size() / 3;
   plan.shadowed_of_primitive.assign(scene.primitives.size(), {});
   for (std::size_t p = 0; p < scene.primitives.size(); ++p)
     plan.shadowed_of_primitive[p].assign(plan.lights_of_primitive[p].size(), 0);

@@ -10,7 +10,7 @@
 //
 // Errors are measured against independent long-double Boost.Math references in a different
 // parametrisation (tests/kernels/linear/linear_reference.h: t in [0,1]; tests/kernels/area/
-// area_reference.h: area integrand over the polygon; accuracy_disk_reference.h: polar
+// area_reference.h: area integrand over the polygon; tests/kernels/area/disk_reference.h: polar
 // coordinates over the disk). Case inputs are rounded to float first, so the same reference
 // serves the double and the float evaluation: the float error is that of the computation only.
 // Times: one thread, ns per evaluation, median over repetitions of the whole batch.
@@ -33,9 +33,9 @@
 #include <vector>
 
 #include "kernels/area/area_reference.h"
+#include "kernels/area/disk_reference.h"
 #include "kernels/linear/linear_reference.h"
 
-#include "accuracy_disk_reference.h"
 #include "accuracy_methods.h"
 #include "area_light.h"
 #include "bake/light_vertices.h"
@@ -46,6 +46,9 @@
 
 namespace vlit::bench {
 namespace {
+
+using test::DiskQuery;
+using test::disk_reference;
 
 using LD = long double;
 namespace fs = std::filesystem;
@@ -808,7 +811,8 @@ AreaSections area_report(const Options& o) {
 
 template <class T>
 struct DiskX {
-  DiskLight<T> light;
+  PreparedDiskLight<T> light;                  // per-light constants, as in the bake loop
+  std::array<PreparedAreaLight<T>, 4> polygon;  // equal-area regular 8-, 16-, 32-, 64-gons (baseline)
   ShadingPoint<T> sp;
 };
 
@@ -871,13 +875,27 @@ std::vector<NamedDiskStiff> stiff_disk_cases(bool for_specular) {
   s.push_back({"crossing horizon", "tangent plane of P cuts the disk", {
       mk({}, 1, {0, 0, 0.5}, {1, 0, 0}, {1, 0, -1}), mk({}, 1, {0.3, 0.2, 0.3}, normalize(Vec3d{1, 1, -0.5}), {0.5, 0.5, -1}, 1000)}});
   s.push_back({"huge 1e6", "radius 1e6, P at height 1", {mk({}, 1e6, {0, 0, 1}, down, {0.2, 0.1, -1}), mk({}, 1e6, {5e5, 0, 1}, normalize(Vec3d{0.5, 0, -1}), {0.5, 0.5, -1})}});
+  s.push_back({"tiny 1e-6", "radius 1e-6 at distance 1e-6 .. 1", {mk({}, 1e-6, {1e-6, 0, 1e-6}, normalize(Vec3d{-0.3, 0.2, -1}), down),
+      mk({}, 1e-6, {0.3, 0, 1}, down, down)}});
+  s.push_back({"near 1e-6", "P at height 1e-6 over the disk", {mk({}, 1, {0.2, 0.1, 1e-6}, down, down)}});
+  s.push_back({"grazing", "N 1e-6 off the disk's plane; P 1e-3 above the plane beside the disk", {
+      mk({}, 1, {0, 0, 1}, normalize(Vec3d{1, 0, -1e-6}), down), mk({}, 1, {2, 0, 1e-3}, normalize(Vec3d{-1, 0, 1e-6}), down)}});
   return s;
 }
+
+// The regular n-gon with the disk's area: vertex radius R sqrt(2 pi / (n sin(2 pi / n))).
+constexpr int kDiskBaselineEdges[4] = {8, 16, 32, 64};
 
 template <class T>
 DiskX<T> disk_typed(const DiskQuery& q) {
   DiskX<T> x;
-  x.light = {static_cast<Vec3<T>>(q.center), static_cast<Vec3<T>>(q.normal), T(q.radius), false};
+  const DiskLight<T> light{static_cast<Vec3<T>>(q.center), static_cast<Vec3<T>>(q.normal), T(q.radius), false};
+  x.light = prepare_disk_light(light);
+  for (int i = 0; i < 4; ++i) {
+    const int n = kDiskBaselineEdges[i];
+    const double scale = std::sqrt(2 * M_PI / (n * std::sin(2 * M_PI / n)));
+    x.polygon[i] = disk_polygon(light, n, AreaReal<T>(q.radius) * AreaReal<T>(scale));
+  }
   x.sp = {static_cast<Vec3<T>>(q.p), static_cast<Vec3<T>>(q.n), static_cast<Vec3<T>>(q.rv), T(q.m)};
   return x;
 }
@@ -913,10 +931,10 @@ DiskSections disk_report(const Options& o) {
   DiskSections out;
   Section& sec = out.diffuse;
   sec.key = "disk-diffuse";
-  sec.title = "Disk light (polygon bracket), diffuse";
+  sec.title = "Disk light, diffuse";
   Section& sec_s = out.specular;
   sec_s.key = "disk-specular";
-  sec_s.title = "Disk light (polygon bracket), exact specular";
+  sec_s.title = "Disk light, exact specular (64-gon bracket)";
   const int count = o.quick ? 6 : 96;
   const std::vector<DiskQuery> ord = ordinary_disk_cases(count);
   const auto named = stiff_disk_cases(false);
@@ -928,25 +946,24 @@ DiskSections disk_report(const Options& o) {
   sec.stiff.case_text = sd.group_text;
   sec_s.stiff.case_names = ss.group_names;
   sec_s.stiff.case_text = ss.group_text;
-  for (double tol : {1e-2, 1e-4, 1e-6, 1e-8}) {
-    char name[64], promise[96];
-    std::snprintf(name, sizeof name, "diffuse, tol %g%s", tol, tol == 1e-6 ? " (default)" : "");
-    std::snprintf(promise, sizeof promise, "bracket width <= %g relative, else 64 edges", tol);
-    auto f = [tol](const auto& x, std::size_t) {
-      SpecularOptions none;
-      none.method = SpecularMethod::kNone;
-      return shade_disk_bracket(x.light, x.sp, none, tol).estimate.diffuse;
-    };
-    method(sec, o, name, "diffuse", promise, od, &sd, f, kAlways);
+  SpecularOptions none;
+  none.method = SpecularMethod::kNone;
+  method(sec, o, "analytic contour (default)", "diffuse", "closed form of eq. 9 over the circle; rounding only", od, &sd,
+         [none](const auto& x, std::size_t) { return shade_disk(x.light, x.sp, none).diffuse; }, kAlways);
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = "equal-area " + std::to_string(kDiskBaselineEdges[i]) + "-gon, contour";
+    method(sec, o, name, "diffuse", "polygon approximation (baseline)", od, &sd,
+           [none, i](const auto& x, std::size_t) { return shade_area(x.polygon[i], x.sp, none).diffuse; }, kAlways);
   }
   for (double tol : {1e-2, 1e-4, 1e-6}) {
     char name[64], promise[96];
     std::snprintf(name, sizeof name, "exact specular, tol %g", tol);
-    std::snprintf(promise, sizeof promise, "bracket width <= %g relative, else 64 edges", tol);
+    std::snprintf(promise, sizeof promise, "(2 I_out + I_in)/3 of the 64-gon bracket, each to %g", tol);
     auto f = [tol](const auto& x, std::size_t) {
       SpecularOptions ex;
       ex.method = SpecularMethod::kExact;
-      return shade_disk_bracket(x.light, x.sp, ex, tol).estimate.specular;
+      ex.exact_tolerance = tol;
+      return shade_disk(x.light, x.sp, ex).specular;
     };
     method(sec_s, o, name, "specular", promise, os, &ss, f, kAlways);
   }
@@ -1251,9 +1268,9 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
   const Row* aex3 = find_row(as, "exact tol 0.001");
   const Row* aex6 = find_row(as, "exact tol 1e-06");
   const Row* aex9 = find_row(as, "exact tol 1e-09");
-  const Row* d6 = find_row(dd, "diffuse, tol 1e-06");
-  const Row* d8 = find_row(dd, "diffuse, tol 1e-08");
-  const Row* d2 = find_row(dd, "diffuse, tol 0.01");
+  const Row* d6 = find_row(dd, "analytic contour (default)");
+  const Row* d8 = find_row(dd, "equal-area 8-gon, contour");
+  const Row* d64 = find_row(dd, "equal-area 64-gon, contour");
   const Row* ds6 = find_row(ds, "exact specular, tol 1e-06");
   const Row* ds2 = find_row(ds, "exact specular, tol 0.01");
   std::ostringstream md;
@@ -1265,7 +1282,7 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
      << "- **References**, independent of every method measured: long-double Boost.Math Gauss-Kronrod in a different "
         "parametrisation — linear: `tests/kernels/linear/linear_reference.h` (t in [0,1], split at the horizon, "
         "the foot and the lobe peak); area: `tests/kernels/area/area_reference.h` (area integrand over the polygon, "
-        "polar/Duffy coordinates); disk: `bench/accuracy_disk_reference.h` (polar coordinates over the disk, split at "
+        "polar/Duffy coordinates); disk: `tests/kernels/area/disk_reference.h` (polar coordinates over the disk, split at "
         "the horizon and lobe lines). Case inputs are rounded to float first, so one reference serves double and float "
         "and the float error is the computation's own.\n"
      << "- **Time**: ns per evaluation (light × point, including the per-point set-up, excluding per-light "
@@ -1298,8 +1315,8 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
      << "| area diffuse (contour) | rounding only | double " << stat(acont, true, "max") << " / stiff "
      << stiff_max(ad, "contour", 0) << "; float " << stat(acont, false, "max") << " | " << stat(acont, true, "ns")
      << " |\n"
-     << "| disk, tolerance 1e-6 (default) | bracket width ≤ 1e-6 relative, else 64 edges | diffuse "
-     << stat(d6, true, "max") << " / stiff " << stiff_max(dd, "diffuse, tol 1e-06", 0) << "; exact specular "
+     << "| disk diffuse (analytic contour); specular: 64-gon bracket | rounding only (diffuse) | diffuse "
+     << stat(d6, true, "max") << " / stiff " << stiff_max(dd, "analytic contour (default)", 0) << "; exact specular "
      << stat(ds6, true, "max") << " | diffuse " << stat(d6, true, "ns") << ", exact specular " << stat(ds6, true, "ns")
      << " |\n\n";
 
@@ -1331,12 +1348,13 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
         "the integral.\n"
      << "3. **Area diffuse.** The contour form is at rounding level (" << stat(acont, true, "max")
      << "); Monte Carlo needs thousands of samples for 1e-3.\n"
-     << "4. **Disk.** The default tolerance 1e-6 is met on the diffuse (" << stat(d6, true, "max")
-     << "), but tolerances below ~1e-6 are **not achievable**: the 64-edge cap is reached and tol 1e-8 gives "
-     << stat(d8, true, "max") << ", the same as 1e-6. Tol 1e-2 gives " << stat(d2, true, "max") << " at "
-     << stat(d2, true, "ns") << ". The disk's exact specular is expensive (" << stat(ds6, true, "ns")
+     << "4. **Disk.** The diffuse is the closed form of eq. 9 over the circle (horizon-clipped: arc + chord), at "
+        "rounding level (" << stat(d6, true, "max") << ", stiff " << stiff_max(dd, "analytic contour (default)", 0)
+     << ") for " << stat(d6, true, "ns") << "; an equal-area polygon is far worse and not cheaper (8-gon "
+     << stat(d8, true, "max") << " at " << stat(d8, true, "ns") << ", 64-gon " << stat(d64, true, "max") << " at "
+     << stat(d64, true, "ns") << "). The disk's exact specular is expensive (" << stat(ds6, true, "ns")
      << " at tol 1e-6, two 64-gons with the exact area specular each; tol 1e-2: " << stat(ds2, true, "max") << " at "
-     << stat(ds2, true, "ns") << "). **Keep 1e-6** for the diffuse; document that the disk's error floor is ~1e-6.\n"
+     << stat(ds2, true, "ns") << ") and limited by the bracket (~1e-4 on a near-rim lobe).\n"
      << "5. **Float vs double.** The kernels compute float in double internally, so float costs the same and its error "
         "is the final rounding (closed forms " << stat(closed2, false, "max") << ", area contour "
      << stat(acont, false, "max") << "). **Keep the bake in double** (the library's loop is double): float brings no "
@@ -1364,11 +1382,6 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
   md << "A `0` means identical after the per-vertex result is stored as float (`VertexLight` holds `Vec3f`): the "
         "diffuse kernels of every setting agree to well below float precision.\n\n";
   md << "## Open problems this report found (see the stiff tables for the numbers)\n\n"
-     << "- **Disk near its rim** (P at height 1e-4 just outside the rim): the polygon bracket's estimate "
-        "(2 I_out + I_in)/3 is far off at every tolerance, because P lies under the circumscribed 64-gon "
-        "(R / cos(pi/64) > 1.001 R); the bracket is still rigorous but 64 edges cannot close it, and the returned "
-        "estimate is not inside a useful error bound. `shade_disk_bracket` reports the bracket width; callers of "
-        "`shade_disk` do not see it.\n"
      << "- **Area exact specular, \"near 1e-6\" and \"huge 1e6\"**: errors of order 1 against the area reference at every "
         "tolerance. Not yet determined whether the kernel (false convergence of the adaptive cubature on a lobe much "
         "smaller than the light) or the reference is wrong there; Monte Carlo cannot arbitrate (it misses the lobe).\n"
@@ -1380,7 +1393,7 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
         "within this report's time budget; the end-to-end figure compares vlit settings with vlit's own reference "
         "settings only.\n"
      << "- **Disk specular, hardest stiff cases** (P 1e-4 from the rim, radius 1e6 seen off-centre, m = 1e4): the "
-        "long-double reference (`bench/accuracy_disk_reference.h`) takes 2-40 s per case there, so only the diffuse is "
+        "long-double reference (`tests/kernels/area/disk_reference.h`) takes 2-40 s per case there, so only the diffuse is "
         "checked on them.\n"
      << "- **Area peak against the lobe's maximum**: measured for the linear light only (no independent area "
         "lobe-maximum reference yet); the area peak is checked against a dense search in the area tests.\n"

@@ -1,6 +1,7 @@
 // Independent long-double reference for the disk light (diffuse and exact specular), used by the
-// accuracy report: Boost.Math adaptive Gauss-Kronrod over the disk in polar coordinates (rho, phi)
-// about its centre, not through polygons like shaders_cpu/disk_light.h.
+// disk tests and the accuracy report: Boost.Math adaptive Gauss-Kronrod over the disk in polar
+// coordinates (rho, phi) about its centre, neither through polygons nor through the contour
+// integral of shaders_cpu/disk_diffuse_contour.h.
 //
 // For a fixed phi the horizon N.(x - P) = 0 and the lobe's zero Rv.(x - P) = 0 are linear in rho:
 // the radial integral is split at their roots, so max(0, .) never puts a kink inside a piece, and
@@ -19,7 +20,7 @@
 
 #include "core/vec3.h"
 
-namespace vlit::bench {
+namespace vlit::test {
 
 struct DiskQuery {
   Vec3d center, normal;
@@ -142,4 +143,4 @@ inline long double disk_reference(const DiskQuery& q) {
   return total;
 }
 
-}  // namespace vlit::bench
+}  // namespace vlit::test

@@ -34,6 +34,14 @@ double diffuse(const DiskLight<double>& d, const ShadingPoint<double>& sp) {
   return shade_disk(d, sp, spec_options(SpecularMethod::kNone)).diffuse;
 }
 
+// The same closed form evaluated in long double (rounding diagnosis, not a reference).
+long double diffuse_long_double(const DiskLight<double>& d, const ShadingPoint<double>& sp) {
+  const PreparedAreaLight<long double> pl =
+      disk_polygon(DiskLight<long double>{static_cast<V3>(d.center), static_cast<V3>(d.normal), d.radius}, 3, 1);
+  const AreaView<LD> view = make_area_view(pl, static_cast<V3>(sp.p));
+  return disk_diffuse_contour(view, LD(d.radius), static_cast<V3>(sp.n));
+}
+
 // Eq. 9's contour integral of the whole circle by 1D quadrature in long double: -1/2 ∮ N.(r x r') / |r|^2
 // dtheta, r = d + R e(theta), graded around the rim point nearest to P (where the integrand peaks
 // with width ~ dist(P, rim) / R); good to ~1e-12 there. Independent of the closed-form antiderivative; valid when the
@@ -176,7 +184,10 @@ TEST_CASE("disk diffuse: stiff cases against the quadrature") {
     const ErrorMeasure e = measure(v, ref, unclipped_scale(c.d, c.sp));
     INFO(c.name, ": value ", v, " reference ", ref);
     CHECK(e.within(c.bar));
-    MESSAGE("disk stiff '", std::string(c.name), "': rel. err. ", e.rel, " (abs/scale ", e.abs_scaled, ")");
+    const double vs_long = double((LD(v) - diffuse_long_double(c.d, c.sp)) / LD(v));
+    CHECK(std::abs(vs_long) <= 2e-15);
+    MESSAGE("disk stiff '", std::string(c.name), "': rel. err. ", e.rel, " (abs/scale ", e.abs_scaled,
+            "); double vs long double kernel ", vs_long);
     // float: computed in double on the same (float-rounded) inputs, rounded once
     const DiskLight<float> df{static_cast<Vec3f>(c.d.center), static_cast<Vec3f>(c.d.normal), float(c.d.radius)};
     const ShadingPoint<float> sf{static_cast<Vec3f>(c.sp.p), static_cast<Vec3f>(c.sp.n), static_cast<Vec3f>(c.sp.rv), 1};
@@ -207,7 +218,10 @@ TEST_CASE("disk diffuse: stiff full circles against a 1D quadrature of the conto
     const double v = diffuse(c.d, c.sp);
     INFO(c.name, ": value ", v, " 1D contour quadrature ", ref);
     CHECK(std::abs(v - ref) <= 1e-11 * std::abs(ref));  // the quadrature's own accuracy (rounding ~1e-16 x O(1) terms)
-    MESSAGE("disk full circle '", std::string(c.name), "': rel. err. vs 1D contour quadrature ", (v - ref) / ref);
+    const double vs_long = double((LD(v) - diffuse_long_double(c.d, c.sp)) / LD(v));
+    CHECK(std::abs(vs_long) <= 2e-15);
+    MESSAGE("disk full circle '", std::string(c.name), "': rel. err. vs 1D contour quadrature ", (v - ref) / ref,
+            "; double vs long double kernel ", vs_long);
   }
 }
 

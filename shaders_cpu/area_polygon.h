@@ -211,6 +211,19 @@ bool ray_hits_polygon(const ClipPolygon<R>& poly, const AreaView<R>& view, const
   return winding_number(poly, view, hit) != 0;
 }
 
+// a x b for a = D + d_i, b = D + d_j (D = c - P, d relative to the light's centre c), by the
+// form with the smaller rounding error: D x (d_j - d_i) + d_i x d_j keeps a small light far away
+// exact (terms ~ |D| |d|), a x b keeps an edge close to P exact when P is far from c (terms
+// ~ |a| |b|; the first form would cancel terms ~ |d|^2 down to ~ |a| |b|).
+template <class R>
+Vec3<R> edge_cross(const Vec3<R>& D, const Vec3<R>& di, const Vec3<R>& dj) {
+  const Vec3<R> a = D + di, b = D + dj;
+  const R direct = length_squared(a) * length_squared(b);
+  const R split = std::max(length_squared(D) * length_squared(dj - di), length_squared(di) * length_squared(dj));
+  if (direct < split) return cross(a, b);
+  return cross(D, dj - di) + cross(di, dj);
+}
+
 // max(0, cos alpha)^m from the angle alpha in [0, pi], accurate for alpha -> 0 and large m:
 // cos alpha = 1 - 2 sin^2(alpha/2), so log(cos alpha) = log1p(-2 sin^2(alpha/2)).
 template <class R>

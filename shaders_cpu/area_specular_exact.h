@@ -70,28 +70,31 @@ struct Kronrod15 {
                               R(0.381830050505118944950369775488975), R(0.417959183673469387755102040816327)};
 };
 
+// (1 - c^{m+1}) / |Rv x x|^2 at the point x (relative to P), c = Rv.x / |x|: the radial integral
+// of the lobe per unit azimuth about Rv, divided by |Rv x x|^2 (dphi = Rv.(x x dx) / |Rv x x|^2).
+template <class R>
+R lobe_per_azimuth(const Vec3<R>& x, const Vec3<R>& rv, R m) {
+  const R r = length(x);
+  const R rx = dot(rv, x);
+  const R perp2 = length_squared(cross(rv, x));
+  if (!(r > R(0))) return R(0);
+  if (!(rx > R(0))) {  // only for m = 0 (no lobe clip): 1 - c, c <= 0
+    return perp2 > R(0) ? (R(1) - rx / r) / perp2 : R(0);
+  }
+  const R base = r * (r + rx);  // perp2 = (1 - c) * base
+  const R one_minus_c = std::min(perp2 / base, R(1));
+  if (one_minus_c == R(0)) return (m + R(1)) / base;
+  // (1 - c^{m+1}) / (1 - c), c^{m+1} = exp((m + 1) log1p(-(1 - c)))
+  const R ratio = -std::expm1((m + R(1)) * std::log1p(-one_minus_c)) / one_minus_c;
+  return ratio / base;
+}
+
 // One edge x(t) = a + t e as seen from P, and the radial-integrated lobe along it.
 template <class R>
 struct EdgeIntegrand {
   Vec3<R> a, e, rv;
   R m;
-  // (1 - c^{m+1}) / |Rv x x|^2 at x(t)
-  R operator()(R t) const {
-    const Vec3<R> x = a + e * t;
-    const R r = length(x);
-    const R rx = dot(rv, x);
-    const R perp2 = length_squared(cross(rv, x));
-    if (!(r > R(0))) return R(0);
-    if (!(rx > R(0))) {  // only for m = 0 (no lobe clip): 1 - c, c <= 0
-      return perp2 > R(0) ? (R(1) - rx / r) / perp2 : R(0);
-    }
-    const R base = r * (r + rx);               // perp2 = (1 - c) * base
-    const R one_minus_c = std::min(perp2 / base, R(1));
-    if (one_minus_c == R(0)) return (m + R(1)) / base;
-    // (1 - c^{m+1}) / (1 - c), c^{m+1} = exp((m + 1) log1p(-(1 - c)))
-    const R ratio = -std::expm1((m + R(1)) * std::log1p(-one_minus_c)) / one_minus_c;
-    return ratio / base;
-  }
+  R operator()(R t) const { return lobe_per_azimuth(a + e * t, rv, m); }
 };
 
 template <class R, class F>
@@ -211,16 +214,6 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   }
   value = 0;
   for (int k = 0; k < size; ++k) value += heap[k].value;
-#ifdef VLIT_EXACT_DEBUG
-  error = 0;
-  for (int k = 0; k < size; ++k) error += heap[k].error;
-  std::fprintf(stderr, "pieces %d splits %d error %g value %g\n", size, splits, double(error), double(value));
-  for (int i = 0; i < n; ++i) {
-    R ev = 0;
-    for (int k = 0; k < size; ++k) if (heap[k].edge == i) ev += heap[k].value;
-    std::fprintf(stderr, "  edge %d w %.17Lg value %.17Lg a=(%Lg %Lg %Lg) e=(%Lg %Lg %Lg)\n", i, (long double)weight[i], (long double)ev, (long double)edge[i].a.x, (long double)edge[i].a.y, (long double)edge[i].a.z, (long double)edge[i].e.x, (long double)edge[i].e.y, (long double)edge[i].e.z);
-  }
-#endif
   return std::max(-view.orient * value, R(0));
 }
 

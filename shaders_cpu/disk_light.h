@@ -7,9 +7,11 @@
 // Method (docs/area-lights.md "Disk lights"):
 // - diffuse: Lambert's contour integral (Picott 1992 eq. 9) in closed form over the circle, with
 //   horizon clipping (arc + chord): disk_diffuse_contour.h. Rounding-level accurate; no polygon.
-// - specular (every method): the inscribed regular 64-gon (vertex radius R) and the circumscribed
-//   one (R / cos(pi/64)), prepared once per light by prepare_disk_light, shaded by the area
-//   specular kernels. All integrands are >= 0 and the peak is monotone in the set, so
+// - exact specular: the lobe's contour integral over the disk's own boundary (rim arcs and
+//   chords), error-controlled: disk_specular_exact.h.
+// - peak and neighbourhood specular: the inscribed regular 64-gon (vertex radius R) and the
+//   circumscribed one (R / cos(pi/64)), prepared once per light by prepare_disk_light, shaded by
+//   the area specular kernels. All integrands are >= 0 and the peak is monotone in the set, so
 //     I_in <= I_disk <= I_out   (a rigorous bracket for the exact specular and the peak)
 //   and we return (2 I_out + I_in) / 3, whose area is exact to O(n^-4)
 //   (A_in/A = 1 - 2 pi^2/(3 n^2) + ..., A_out/A = 1 + pi^2/(3 n^2) + ...).
@@ -25,6 +27,7 @@
 
 #include "area_light.h"
 #include "disk_diffuse_contour.h"
+#include "disk_specular_exact.h"
 
 namespace vlit {
 
@@ -132,7 +135,13 @@ Response<T> shade_disk(const PreparedDiskLight<T>& light, const ShadingPoint<T>&
   if (!view.lit) return {};
   Response<T> r;
   r.diffuse = static_cast<T>(disk_diffuse_contour(view, light.radius, static_cast<Vec3<R>>(sp.n)));
-  if (spec.method != SpecularMethod::kNone) r.specular = static_cast<T>(disk_specular_bracket(light, sp, spec).estimate);
+  if (spec.method == SpecularMethod::kExact) {
+    r.specular = static_cast<T>(disk_specular_exact(view, light.radius, static_cast<Vec3<R>>(sp.n),
+                                                    static_cast<Vec3<R>>(sp.rv), static_cast<R>(sp.shininess),
+                                                    static_cast<R>(spec.exact_tolerance)));
+  } else if (spec.method != SpecularMethod::kNone) {
+    r.specular = static_cast<T>(disk_specular_bracket(light, sp, spec).estimate);
+  }
   return r;
 }
 

@@ -244,7 +244,7 @@ TEST_CASE("disk diffuse: P in the plane, behind, two-sided, invalid") {
                   std::invalid_argument);
 }
 
-TEST_CASE("disk specular: the inscribed/circumscribed bracket contains the quadrature") {
+TEST_CASE("disk specular: exact on the disk, and the polygon bracket, vs the quadrature") {
   struct Case { const char* name; DiskLight<double> d; ShadingPoint<double> sp; };
   const Case cases[] = {
       {"overhead m=10", {{0, 0, 1}, {0, 0, -1}, 1}, {{0.2, 0.1, 0}, {0, 0, 1}, normalize(Vec3d{0.1, 0, 1}), 10}},
@@ -262,9 +262,56 @@ TEST_CASE("disk specular: the inscribed/circumscribed bracket contains the quadr
     CHECK(std::abs(b.estimate - ref) <= 1e-5 * ref);
     MESSAGE("disk specular '", std::string(c.name), "': (2 out + in)/3 rel. err. ", (b.estimate - ref) / ref,
             ", bracket width ", (b.circumscribed - b.inscribed) / ref);
+    const double exact = shade_disk(c.d, c.sp, ex).specular;  // on the disk itself (disk_specular_exact.h)
+    MESSAGE("disk exact specular '", std::string(c.name), "': rel. err. ", (exact - ref) / ref);
+    CHECK(std::abs(exact - ref) <= 1e-8 * ref);
     const Response<double> peak = shade_disk(c.d, c.sp, spec_options(SpecularMethod::kPeak));
     CHECK(all_finite(peak));
     CHECK(peak.specular > 0);
     CHECK(peak.specular <= 1);
   }
+}
+
+TEST_CASE("disk exact specular: random disks vs the quadrature, and closed-form limits") {
+  const SpecularOptions ex = spec_options(SpecularMethod::kExact, 1e-9);
+  Rng rng(777);
+  double worst = 0;
+  int cut = 0;
+  for (int i = 0; i < 30; ++i) {
+    const Vec3d p = rng.unit() * rng.uniform(0, 1);
+    const Vec3d to_light = rng.unit();
+    const DiskLight<double> d{p + to_light * rng.uniform(1, 3), normalize(-to_light + rng.unit() * 0.6), rng.uniform(0.2, 1.5)};
+    const ShadingPoint<double> sp{p, normalize(to_light + rng.unit() * 0.7), normalize(to_light + rng.unit() * 0.4),
+                                  std::round(rng.log_uniform(1, 1e3))};
+    const double ref = static_cast<double>(disk_reference(query(d, sp, true)));
+    const double v = shade_disk(d, sp, ex).specular;
+    const ErrorMeasure e = measure(v, ref, 2 * M_PI / (sp.shininess + 1));  // floor: the whole lobe
+    INFO("case ", i, " value ", v, " reference ", ref);
+    CHECK(e.within(1e-7));
+    worst = std::max(worst, e.effective(1e-7));
+    const Vec3d nl = normalize(d.normal);
+    if (std::abs(dot(sp.n, d.center - p)) < d.radius * length(sp.n - nl * dot(sp.n, nl))) ++cut;
+  }
+  MESSAGE("disk exact specular, 30 random disks (", cut, " cut by the horizon): max rel. err. ", worst);
+  const double m = 100, lobe = 2 * M_PI / (m + 1);
+  const DiskLight<double> unit{{0, 0, 0}, {0, 0, 1}, 1};
+  const Vec3d down{0, 0, -1};
+  // P 1e-6 above the inside of the disk, or 1 above a disk of radius 1e6: the whole lobe.
+  const double near = shade_disk(unit, ShadingPoint<double>{{0.2, 0.1, 1e-6}, down, normalize(Vec3d{0.3, 0, -1}), m}, ex).specular;
+  const double huge = shade_disk(DiskLight<double>{{0, 0, 0}, {0, 0, 1}, 1e6},
+                                 ShadingPoint<double>{{5e5, 0, 1}, down, normalize(Vec3d{0.2, 0.1, -1}), m}, ex).specular;
+  // P 1e-6 above the rim, Rv tangent to it: half the lobe (the rim's curvature is invisible at 1e-6).
+  const double rim = shade_disk(unit, ShadingPoint<double>{{1, 0, 1e-6}, down, normalize(Vec3d{0, 0.3, -1}), m}, ex).specular;
+  // On the axis, Rv along it: 2 pi (1 - cos^{m+1} Theta) / (m + 1), tan Theta = R / d (polar
+  // coordinates about the axis); m = 1e4, far and tiny (Theta = 1e-3: the lobe is not flat on it).
+  const DiskLight<double> far{{0, 0, 1e3}, {0, 0, -1}, 1};
+  const double far_v = shade_disk(far, ShadingPoint<double>{{0, 0, 0}, {0, 0, 1}, {0, 0, 1}, 1e4}, ex).specular;
+  const double cos_t = 1e3 / std::hypot(1e3, 1.0);
+  const double far_expect = -2 * M_PI * std::expm1(10001 * std::log(cos_t)) / 10001;
+  MESSAGE("disk exact specular limits: near 1e-6 ", (near - lobe) / lobe, ", huge 1e6 ", (huge - lobe) / lobe,
+          ", over the rim ", (rim - lobe / 2) / (lobe / 2), ", on the axis far, m=1e4 ", (far_v - far_expect) / far_expect);
+  CHECK(near == doctest::Approx(lobe).epsilon(1e-9));
+  CHECK(huge == doctest::Approx(lobe).epsilon(1e-9));
+  CHECK(rim == doctest::Approx(lobe / 2).epsilon(1e-5));
+  CHECK(far_v == doctest::Approx(far_expect).epsilon(1e-9));
 }

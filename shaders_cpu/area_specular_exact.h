@@ -22,6 +22,9 @@
 //     a smooth 1D integrand: where the edge passes through Rv, (1 - c^{m+1}) / |Rv x x|^2 ->
 //     (m + 1) / (2 |x|^2); 1 - c^{m+1} = -expm1((m + 1) log1p(-(1 - c))) with
 //     1 - c = |Rv x x|^2 / (|x| (|x| + Rv.x)), no cancellation near the peak.
+//     When Rv is outside the visible light the "1" part sums to 0 exactly (winding number 0) and
+//     only the tail is integrated: Is = orient Σ_i Rv.(a_i x b_i) / (m + 1) ∫ c^{m+1} / |Rv x x|^2 dt
+//     (no cancellation of terms ~ 1 / (m + 1) down to a tiny value).
 //  3. globally adaptive Gauss-Kronrod (7/15 points) over all edges: each edge starts split at the
 //     point closest to P (the 1/|x|^2 peak, width ~ its distance d_P: graded cuts at d_P 4^k) and at
 //     the point closest in angle to Rv (the lobe, width ~ |x| / sqrt(m + 1): graded likewise);
@@ -41,6 +44,7 @@
 #include <limits>
 
 #include "area_polygon.h"
+#include "area_specular_peak.h"
 
 namespace vlit {
 
@@ -72,12 +76,18 @@ struct Kronrod15 {
 
 // (1 - c^{m+1}) / |Rv x x|^2 at the point x (relative to P), c = Rv.x / |x|: the radial integral
 // of the lobe per unit azimuth about Rv, divided by |Rv x x|^2 (dphi = Rv.(x x dx) / |Rv x x|^2).
+// tail: c^{m+1} / |Rv x x|^2 instead (the "1" part integrates to the winding number exactly).
 template <class R>
-R lobe_per_azimuth(const Vec3<R>& x, const Vec3<R>& rv, R m) {
+R lobe_per_azimuth(const Vec3<R>& x, const Vec3<R>& rv, R m, bool tail = false) {
   const R r = length(x);
   const R rx = dot(rv, x);
   const R perp2 = length_squared(cross(rv, x));
   if (!(r > R(0))) return R(0);
+  if (tail) {
+    if (!(perp2 > R(0))) return R(0);
+    if (!(rx > R(0))) return m == R(0) ? rx / r / perp2 : R(0);
+    return std::exp((m + R(1)) * std::log(rx / r)) / perp2;
+  }
   if (!(rx > R(0))) {  // only for m = 0 (no lobe clip): 1 - c, c <= 0
     return perp2 > R(0) ? (R(1) - rx / r) / perp2 : R(0);
   }
@@ -94,7 +104,8 @@ template <class R>
 struct EdgeIntegrand {
   Vec3<R> a, e, rv;
   R m;
-  R operator()(R t) const { return lobe_per_azimuth(a + e * t, rv, m); }
+  bool tail = false;
+  R operator()(R t) const { return lobe_per_azimuth(a + e * t, rv, m, tail); }
 };
 
 template <class R, class F>
@@ -118,11 +129,15 @@ bool less_error(const Piece<R>& a, const Piece<R>& b) { return a.error < b.error
 }  // namespace area_exact_detail
 
 // Is(exact) of the horizon-clipped polygon `horizon_clipped`.
+// rv is normalised here: the identities below (|Rv x x|^2 = |x|^2 - (Rv.x)^2) need a unit Rv, and
+// the definition's lobe is max(0, Rv.w)^m with unit Rv (a float-rounded Rv is off by ~1e-7, which
+// m = 1e3 would turn into 1e-4).
 template <class R>
 R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& view,
-                      const Vec3<R>& rv, R shininess, R tolerance) {
+                      const Vec3<R>& rv_in, R shininess, R tolerance) {
   using namespace area_exact_detail;
   if (!view.lit || horizon_clipped.count < 3) return R(0);
+  const Vec3<R> rv = normalize(rv_in);
   // 1. Lobe clip (not for m = 0, where max(0, c)^0 = 1 everywhere: the solid angle).
   ClipPolygon<R> lobe_clipped;
   const ClipPolygon<R>* poly = &horizon_clipped;
@@ -133,6 +148,12 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   const int n = poly->count;
   if (n < 3) return R(0);
   const R lobe_width = R(1) / std::sqrt(shininess + R(1));  // ~ angular width of cos^m
+  // Rv outside the visible light: Σ ∫ dphi = 0 exactly, so integrate only the tail c^{m+1}
+  // (form B); otherwise the edge terms, each ~ 1 / (m + 1), would cancel down to a value that
+  // can be 1e-12 of them (a lobe that barely reaches the light).
+  // Only when Rv is at least a lobe width away from the light: closer, the tail's integrand
+  // c^{m+1} / |Rv x x|^2 has a peak of height 1 / angle^2 and the full form is the better one.
+  const bool tail = shininess > R(0) && area_specular_peak_direction(*poly, view, rv).angle > lobe_width;
 
   // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.
   std::array<EdgeIntegrand<R>, kMaxClipVertices> edge{};
@@ -159,7 +180,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
     const Vec3<R> cr = edge_cross(view.D, di, dj);  // a x b
     const R w = dot(rv, cr) / (shininess + R(1));
     if (w == R(0)) continue;  // the edge's plane contains Rv: dphi = 0 along it
-    edge[i] = {view.D + di, e, rv, shininess};
+    edge[i] = {view.D + di, e, rv, shininess, tail};
     weight[i] = w;
     // Initial cuts: graded around the point closest to P and the point closest in angle to Rv.
     std::array<R, 48> cuts{};
@@ -183,7 +204,10 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
       const R den = dot(cross(e, wdir), pole);
       if (den != R(0)) {
         const R tr = std::clamp(-dot(cross(a, wdir), pole) / den, R(0), R(1));
-        graded(tr, lobe_width * length(a + e * tr) / len);
+        // the integrand's peak width there: the lobe's, or (tail form) the angle to Rv if smaller
+        const Vec3<R> xr = a + e * tr;
+        const R angle = std::atan2(length(cross(rv, xr)), dot(rv, xr));
+        graded(tr, std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len);
       }
     }
     std::sort(cuts.begin(), cuts.begin() + nc);
@@ -214,6 +238,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   }
   value = 0;
   for (int k = 0; k < size; ++k) value += heap[k].value;
+  if (tail) return std::max(view.orient * value, R(0));  // Is = orient Σ w_i ∫ c^{m+1} / |Rv x x|^2
   return std::max(-view.orient * value, R(0));
 }
 

@@ -5,6 +5,7 @@
 //   Is(exact) = ∫_Omega [N.w > 0] max(0, Rv.w)^m dw over the directions toward the disk.
 // Method: as area_specular_exact.h (polar coordinates about Rv, radial integral closed):
 //   Is = -1/(m + 1) ∮ (1 - c^{m+1}) dphi,  dphi = Rv.(x x dx) / |Rv x x|^2,  c = Rv.x / |x|,
+// (or +1/(m + 1) ∮ c^{m+1} dphi when Rv misses the visible part: the winding number is 0),
 // over the boundary of disk ∩ {N.(x - P) >= 0} ∩ {Rv.(x - P) >= 0} (the last for m > 0),
 // traversed counter-clockwise about the disk's normal n (toward P). In the disk's plane
 // (coordinates p relative to the centre, axes u, v with u x v = n) each half-space is
@@ -32,9 +33,10 @@ namespace vlit {
 inline constexpr int kDiskExactMaxPieces = 1024;
 
 template <class R>
-R disk_specular_exact(const AreaView<R>& view, R radius, const Vec3<R>& n, const Vec3<R>& rv, R m, R tolerance) {
+R disk_specular_exact(const AreaView<R>& view, R radius, const Vec3<R>& n, const Vec3<R>& rv_in, R m, R tolerance) {
   using namespace area_exact_detail;
   if (!view.lit) return R(0);
+  const Vec3<R> rv = normalize(rv_in);  // unit Rv, as in area_specular_exact.h
   const R pi = R(M_PI);
   // Constraints alpha.p + beta >= 0 in the disk's plane.
   struct Line { R ax, ay, beta; };
@@ -76,12 +78,28 @@ R disk_specular_exact(const AreaView<R>& view, R radius, const Vec3<R>& n, const
   int size = 0;
   R value = 0, error = 0;
   const R lobe_width = R(1) / std::sqrt(m + R(1));
+  // Rv outside the visible part: integrate only the tail c^{m+1} (area_specular_exact.h).
+  bool rv_inside = false;
+  {
+    const R toward = -dot(view.normal, rv);
+    if (toward > R(0)) {
+      const Vec3<R> hit = rv * (view.height / toward) - view.D;  // relative to the centre
+      rv_inside = length_squared(hit) <= radius * radius && dot(n, rv) >= R(0);
+      // near the rim (within a lobe width as seen from P): keep the full form (see area_specular_exact.h)
+      const R lh = length(hit);
+      if (!rv_inside && lh > R(0)) {
+        const Vec3<R> rim = view.D + hit * (radius / lh);  // rim point nearest the hit, from P
+        if (std::atan2(length(cross(rv, rim)), dot(rv, rim)) <= lobe_width) rv_inside = true;
+      }
+    }
+  }
+  const bool tail = m > R(0) && !rv_inside;
   auto integrand = [&](int c, R t) {
     const Curve& cv = curves[c];
-    if (cv.kind == 1) return dot(rv, cross(cv.a, cv.e)) * lobe_per_azimuth(cv.a + cv.e * t, rv, m);
+    if (cv.kind == 1) return dot(rv, cross(cv.a, cv.e)) * lobe_per_azimuth(cv.a + cv.e * t, rv, m, tail);
     const Vec3<R> e = view.u * std::cos(t) + view.v * std::sin(t), de = view.v * std::cos(t) - view.u * std::sin(t);
     const Vec3<R> x = view.D + e * radius;
-    return dot(rv, cross(x, de * radius)) * lobe_per_azimuth(x, rv, m);
+    return dot(rv, cross(x, de * radius)) * lobe_per_azimuth(x, rv, m, tail);
   };
   auto push = [&](int c, R t0, R t1) {
     if (size >= kDiskExactMaxPieces) return;
@@ -176,7 +194,9 @@ R disk_specular_exact(const AreaView<R>& view, R radius, const Vec3<R>& n, const
         const R den = dot(cross(e, wdir), pole);
         if (den != R(0)) {
           centers[1] = std::clamp(-dot(cross(a, wdir), pole) / den, s0, s1);
-          widths[1] = lobe_width * length(a + e * centers[1]) / len;
+          const Vec3<R> xr = a + e * centers[1];
+          const R angle = std::atan2(length(cross(rv, xr)), dot(rv, xr));
+          widths[1] = std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len;
         }
       }
     }
@@ -205,6 +225,7 @@ R disk_specular_exact(const AreaView<R>& view, R radius, const Vec3<R>& n, const
   }
   value = 0;
   for (int k = 0; k < size; ++k) value += heap[k].value;
+  if (tail) return std::max(value / (m + R(1)), R(0));
   return std::max(-value / (m + R(1)), R(0));
 }
 

@@ -63,7 +63,8 @@ inline bool inside_triangle_2d(const RefPoint2& a, const RefPoint2& b, const Ref
 
 inline LD reference_integral(const RefQuery& q) {
   using boost::math::quadrature::gauss_kronrod;
-  const V3 P = static_cast<V3>(q.p), N = static_cast<V3>(q.n), Rv = static_cast<V3>(q.rv);
+  const V3 P = static_cast<V3>(q.p), N = static_cast<V3>(q.n);
+  const V3 Rv = normalize(static_cast<V3>(q.rv));  // the lobe's Rv is a unit vector by definition
   const LD m = q.m;
   LD total = 0;
   for (const auto& piece_d : q.pieces) {

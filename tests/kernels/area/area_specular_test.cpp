@@ -216,9 +216,9 @@ TEST_CASE("area specular exact: random configurations vs area quadrature") {
     const Response<float> kf = shade_area(to_float(light_of(poly)), to_float(sp), spec_options(SpecularMethod::kExact, 1e-9));
     const Response<double> kd = shade_area(to_double(to_float(light_of(poly))), to_double(to_float(sp)), spec_options(SpecularMethod::kExact, 1e-9));
     const ErrorMeasure ef = measure(kf.specular, kd.specular, contour_scale(poly, sp.p));
-    // Known: seed 37 (m = 916) differs by 1.5e-5 at -O2 only: GCC 12.2 drops the double->float
-    // rounding of rv.z in to_double(to_float(sp)) (fixed by -fno-tree-sra), so the two calls get
-    // different inputs (docs/area-lights.md, "Bars NOT met"); reported with WARN, not failing.
+    // Seed 37 (m = 916) differed by 1.5e-5 with the former 2D cubature at -O2 (GCC 12.2 dropped
+    // the double->float rounding of rv.z in to_double(to_float(sp)); docs/area-lights.md); kept
+    // as WARN in case the miscompile comes back.
     INFO("float kernel=", kf.specular, " double kernel on float inputs=", kd.specular);
     WARN(ef.within(kFloatBar));
     CHECK(ef.within(1e-4));

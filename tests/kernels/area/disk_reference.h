@@ -48,7 +48,8 @@ long double gk_bisect(const F& f, long double a, long double b, long double rel_
 inline long double disk_reference(const DiskQuery& q) {
   using LD = long double;
   using V = Vec3<LD>;
-  const V c = static_cast<V>(q.center), p = static_cast<V>(q.p), n = static_cast<V>(q.n), rv = static_cast<V>(q.rv);
+  const V c = static_cast<V>(q.center), p = static_cast<V>(q.p), n = static_cast<V>(q.n);
+  const V rv = normalize(static_cast<V>(q.rv));  // the lobe's Rv is a unit vector by definition
   V nl = static_cast<V>(q.normal);
   nl = nl / std::sqrt(dot(nl, nl));
   const LD big_r = q.radius, m = q.m;

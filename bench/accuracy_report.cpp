@@ -792,7 +792,7 @@ AreaSections area_report(const Options& o) {
     ex.exact_tolerance = tol;
     char name[64], promise[96];
     std::snprintf(name, sizeof name, "exact tol %g%s", tol, tol == 1e-9 ? " (opt. default)" : "");
-    std::snprintf(promise, sizeof promise, "relative %g (5x5 vs 4x4 Duffy estimate)", tol);
+    std::snprintf(promise, sizeof promise, "relative %g (K15 vs G7 along the edges)", tol);
     method(ss, o, name, "m 1..1e3", promise, os, &ss_set, shade_with(ex, true), kAlways);
   }
   for (bool strat : {false, true})

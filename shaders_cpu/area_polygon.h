@@ -22,7 +22,7 @@
 // Non-convex polygons: Sutherland-Hodgman joins the pieces of a non-convex polygon cut by a
 // plane with "bridge" edges lying on the cut line, traversed in both directions. Every
 // quantity computed from the clipped polygon here is a boundary integral (contour sums,
-// winding numbers, signed fan cubature) for which the bridges cancel as chains; tests
+// winding numbers, contour integrals along the edges) for which the bridges cancel as chains; tests
 // "non-convex L-shape crossing the horizon" and "U-shape clipped into two pieces" check it.
 #pragma once
 

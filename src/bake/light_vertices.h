@@ -22,6 +22,9 @@ struct VertexLight {
 struct LightingRequest {
   ShadeOptions shade;
   std::optional<Vec3d> eye;  // specular is evaluated only with an eye
+  // Diffuse-only lights use the float SIMD batch kernels where the plan finds one (bake/batch_lighting.h);
+  // false keeps every light on the scalar double kernels.
+  bool float_batch = true;
   // Called from the calling thread with (vertices done, vertices total); may be empty.
   std::function<void(std::size_t, std::size_t)> progress;
   // Polled between chunks of vertices: when true, lighting stops early (results incomplete).

@@ -70,7 +70,7 @@ enum class AreaForm { kPlain, kSmall, kMixed };
 // g_i - g_ref = (beta/sin(beta) - 1)/(|a||b|) + (1/(|a||b|) - 1/|D|^2) and the last difference is
 // -(|D|^2 (ua + ub) + ua ub) / ((|D|^2 + |a||b|) |a||b| |D|^2), ua = 2 D.da + |da|^2 (no cancellation).
 template <AreaForm kForm>
-inline void area_edge(float Dx, float Dy, float Dz, float dist2, bool small, float nx, float ny, float nz, float ax,
+inline void area_edge(float Dx, float Dy, float Dz, float dist2, float g_ref, bool small, float nx, float ny, float nz, float ax,
                       float ay, float az, float bx, float by, float bz, float& sum, float& mag) {
   const float ex = bx - ax, ey = by - ay, ez = bz - az;
   const float kx = ay * bz - az * by, ky = az * bx - ax * bz, kz = ax * by - ay * bx;  // da x db
@@ -94,10 +94,10 @@ inline void area_edge(float Dx, float Dy, float Dz, float dist2, bool small, flo
     const float ua = 2.f * (Dx * ax + Dy * ay + Dz * az) + (ax * ax + ay * ay + az * az);
     const float ub = 2.f * (Dx * bx + Dy * by + Dz * bz) + (bx * bx + by * by + bz * bz);
     const float labs = lab > 0.f ? lab : 1.f;
-    const float inv_diff = -(dist2 * (ua + ub) + ua * ub) / ((dist2 + labs) * labs * dist2);
     // Small-light lanes see every edge under beta <= 2 asin(kAreaBatchSmallLightRatio) < 0.41.
-    const float g_minus_ref = beta_over_sin_minus_one_float(beta) / labs + inv_diff;
-    const float g_ref = 1.f / dist2;
+    // g - g_ref = series / |a||b| + inv_diff over one common denominator (one division).
+    const float den = (dist2 + labs) * labs;
+    const float g_minus_ref = (beta_over_sin_minus_one_float(beta) * (dist2 + labs) - (dist2 * (ua + ub) + ua * ub) * g_ref) / den;
     const float n_k = nx * kx + ny * ky + nz * kz;
     const float rest = g_minus_ref * n_cr;
     sml = g_ref * n_k + (ok ? rest : 0.f);
@@ -117,7 +117,7 @@ inline void area_edge(float Dx, float Dy, float Dz, float dist2, bool small, flo
 
 // Per-lane state of the edge-major loop over one block of lanes.
 struct AreaBlockState {
-  float Dx[kAreaBatchBlock], Dy[kAreaBatchBlock], Dz[kAreaBatchBlock], dist2[kAreaBatchBlock];
+  float Dx[kAreaBatchBlock], Dy[kAreaBatchBlock], Dz[kAreaBatchBlock], dist2[kAreaBatchBlock], g_ref[kAreaBatchBlock];
   float small[kAreaBatchBlock];  // 1: small-light form (radius < kSmallLightRatio |D|)
   float orient[kAreaBatchBlock], sum[kAreaBatchBlock], mag[kAreaBatchBlock];
   float px[kAreaBatchBlock], py[kAreaBatchBlock], pz[kAreaBatchBlock], ph[kAreaBatchBlock];  // previous vertex (d), N.a
@@ -129,42 +129,60 @@ struct AreaBlockState {
 template <AreaForm kForm>
 inline void area_edges(const AreaBatchLight& L, AreaBlockState& st, const float* __restrict nxs,
                        const float* __restrict nys, const float* __restrict nzs, int n) {
-  for (int i = 0; i < L.count; ++i) {
+  // Restrict pointers to the state's arrays: GCC 12 does not vectorise through the struct reference.
+  const float* __restrict Dx = st.Dx;
+  const float* __restrict Dy = st.Dy;
+  const float* __restrict Dz = st.Dz;
+  const float* __restrict dist2 = st.dist2;
+  const float* __restrict g_ref = st.g_ref;
+  const float* __restrict small = st.small;
+  float* __restrict total = st.sum;
+  float* __restrict mag_total = st.mag;
+  float* __restrict px = st.px;
+  float* __restrict py = st.py;
+  float* __restrict pz = st.pz;
+  float* __restrict ph = st.ph;
+  float* __restrict ex = st.ex;
+  float* __restrict ey = st.ey;
+  float* __restrict ez = st.ez;
+  float* __restrict gx = st.gx;
+  float* __restrict gy = st.gy;
+  float* __restrict gz = st.gz;
+  float* __restrict crossed = st.crossed;
+  const int count = L.count;
+  for (int i = 0; i < count; ++i) {
     const float cx = L.d[i][0], cy = L.d[i][1], cz = L.d[i][2];
 #pragma omp simd
     for (int k = 0; k < n; ++k) {
       const float nx = nxs[k], ny = nys[k], nz = nzs[k];
-      const float hc = nx * (st.Dx[k] + cx) + ny * (st.Dy[k] + cy) + nz * (st.Dz[k] + cz);
-      const float hp = st.ph[k];
-      const bool in_prev = hp >= 0.f, in_cur = hc >= 0.f;
-      const bool cross = in_prev != in_cur;
-      const float t = cross ? hp / (hp - hc) : 0.f;
-      const float xx = st.px[k] + (cx - st.px[k]) * t, xy = st.py[k] + (cy - st.py[k]) * t,
-                  xz = st.pz[k] + (cz - st.pz[k]) * t;
-      const float ax = in_prev ? st.px[k] : xx, ay = in_prev ? st.py[k] : xy, az = in_prev ? st.pz[k] : xz;
-      const float bx = in_cur ? cx : xx, by = in_cur ? cy : xy, bz = in_cur ? cz : xz;
+      const float hc = nx * (Dx[k] + cx) + ny * (Dy[k] + cy) + nz * (Dz[k] + cz);
+      const float hp = ph[k];
+      // Inside flags as 0/1 floats, every select on a fresh float comparison (GCC 12 does not
+      // vectorise this loop with bool variables reused across selects).
+      const float in_prev = hp >= 0.f ? 1.f : 0.f, in_cur = hc >= 0.f ? 1.f : 0.f;
+      const float t = in_prev != in_cur ? hp / (hp - hc) : 0.f;
+      const float xx = px[k] + (cx - px[k]) * t, xy = py[k] + (cy - py[k]) * t, xz = pz[k] + (cz - pz[k]) * t;
+      const float ax = in_prev > 0.f ? px[k] : xx, ay = in_prev > 0.f ? py[k] : xy, az = in_prev > 0.f ? pz[k] : xz;
+      const float bx = in_cur > 0.f ? cx : xx, by = in_cur > 0.f ? cy : xy, bz = in_cur > 0.f ? cz : xz;
       float sum = 0.f, mag = 0.f;
-      area_edge<kForm>(st.Dx[k], st.Dy[k], st.Dz[k], st.dist2[k], st.small[k] > 0.f, nx, ny, nz, ax, ay, az, bx, by,
-                       bz, sum, mag);
-      const bool keep = in_prev | in_cur;
-      st.sum[k] += keep ? sum : 0.f;
-      st.mag[k] += keep ? mag : 0.f;
-      const bool exit = in_prev & !in_cur, entry = !in_prev & in_cur;
-      st.ex[k] = exit ? xx : st.ex[k]; st.ey[k] = exit ? xy : st.ey[k]; st.ez[k] = exit ? xz : st.ez[k];
-      st.gx[k] = entry ? xx : st.gx[k]; st.gy[k] = entry ? xy : st.gy[k]; st.gz[k] = entry ? xz : st.gz[k];
-      st.crossed[k] = exit ? 1.f : st.crossed[k];
-      st.px[k] = cx; st.py[k] = cy; st.pz[k] = cz; st.ph[k] = hc;
+      area_edge<kForm>(Dx[k], Dy[k], Dz[k], dist2[k], g_ref[k], small[k] > 0.f, nx, ny, nz, ax, ay, az, bx, by, bz, sum, mag);
+      total[k] += in_prev + in_cur > 0.f ? sum : 0.f;
+      mag_total[k] += in_prev + in_cur > 0.f ? mag : 0.f;
+      ex[k] = in_prev > in_cur ? xx : ex[k]; ey[k] = in_prev > in_cur ? xy : ey[k]; ez[k] = in_prev > in_cur ? xz : ez[k];
+      gx[k] = in_cur > in_prev ? xx : gx[k]; gy[k] = in_cur > in_prev ? xy : gy[k]; gz[k] = in_cur > in_prev ? xz : gz[k];
+      crossed[k] = in_prev > in_cur ? 1.f : crossed[k];
+      px[k] = cx; py[k] = cy; pz[k] = cz; ph[k] = hc;
     }
   }
   // The closing edge exit -> entry, in the tangent plane.
 #pragma omp simd
   for (int k = 0; k < n; ++k) {
     float sum = 0.f, mag = 0.f;
-    area_edge<kForm>(st.Dx[k], st.Dy[k], st.Dz[k], st.dist2[k], st.small[k] > 0.f, nxs[k], nys[k], nzs[k], st.ex[k],
-                     st.ey[k], st.ez[k], st.gx[k], st.gy[k], st.gz[k], sum, mag);
-    const bool closed = st.crossed[k] > 0.f;
-    st.sum[k] += closed ? sum : 0.f;
-    st.mag[k] += closed ? mag : 0.f;
+    area_edge<kForm>(Dx[k], Dy[k], Dz[k], dist2[k], g_ref[k], small[k] > 0.f, nxs[k], nys[k], nzs[k], ex[k], ey[k], ez[k],
+                     gx[k], gy[k], gz[k], sum, mag);
+    const bool closed = crossed[k] > 0.f;
+    total[k] += closed ? sum : 0.f;
+    mag_total[k] += closed ? mag : 0.f;
   }
 }
 
@@ -195,6 +213,7 @@ inline void area_diffuse_block(const AreaBatchLight& L, const BatchPoints& pts, 
     st.orient[k] = side > 0. ? 1.f : (side < 0. ? back : 0.f);
     st.Dx[k] = float(dxd); st.Dy[k] = float(dyd); st.Dz[k] = float(dzd);
     st.dist2[k] = st.Dx[k] * st.Dx[k] + st.Dy[k] * st.Dy[k] + st.Dz[k] * st.Dz[k];
+    st.g_ref[k] = 1.f / (st.dist2[k] > 0.f ? st.dist2[k] : 1.f);
     const bool small = small_limit < st.dist2[k];
     st.small[k] = small ? 1.f : 0.f;
     small_lanes += small ? 1 : 0;
@@ -212,7 +231,8 @@ inline void area_diffuse_block(const AreaBatchLight& L, const BatchPoints& pts, 
     const float id = -0.5f * st.orient[k] * total;
     const float abs_total = total < 0.f ? -total : total;
     const bool lit = st.orient[k] != 0.f;
-    const bool stiff = lit & (st.mag[k] > kAreaBatchCancellation * abs_total);
+    // |D| > 1e8 would overflow the small-light form's denominators in float.
+    const bool stiff = lit & ((st.mag[k] > kAreaBatchCancellation * abs_total) | (st.dist2[k] > 1e16f));
     st.sum[k] = lit & (!stiff) & (id > 0.f) ? id : 0.f;  // reused as the result
     st.crossed[k] = stiff ? 1.f : 0.f;                   // reused as the stiff flag
   }

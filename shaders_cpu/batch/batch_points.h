@@ -7,8 +7,9 @@
 // unit float vectors. Kernels read lanes [begin, end) and write one float per lane.
 //
 // Determinism: the batch kernels use only +, -, *, /, sqrt, min, max and selects, each correctly
-// rounded in IEEE single or double precision, and no fused multiply-add contraction (the project
-// builds with -std=c++20, where GCC does not contract). A lane's result is therefore the same
+// rounded in IEEE single or double precision, and no fused multiply-add contraction (the file that
+// compiles them, src/shading/batch_kernels.cpp, is built with -ffp-contract=off: GCC contracts by
+// default, differently in a vector body and its remainder). A lane's result is therefore the same
 // whether it is computed in a 16-wide AVX-512 vector, an 8-wide AVX2 vector or the scalar
 // remainder loop: the output does not depend on how vertices are split between threads.
 // Lane code combines conditions with the non-short-circuit & and | so that the compiler sees

@@ -16,7 +16,7 @@
 // Per-light constants (computed once, make_linear_batch_light): Q0, Q1, u = Ld/|Ld|, |Ld|.
 //
 // Precision: per lane, L0 = Q0 - P and L1 = Q1 - P, their projections s0 = L0.u, s1 = L1.u, the
-// perpendicular H = L0 - u s0 and the horizon values L0.N, L1.N are formed in double (the
+// perpendicular H = L0 - u s0, a = H.N, b = u.N and the horizon values L0.N, L1.N are formed in double (the
 // collinear trap: h = |H| keeps full relative precision as P approaches the line); everything
 // after is float, in lengths divided by scale = max(|L0|, |L1|) as in linear_geometry.h.
 //
@@ -39,6 +39,7 @@ struct LinearBatchLight {
   double q0[3], q1[3];
   double u[3];      // unit direction Ld / |Ld|
   double length;    // |Ld| > 0
+  float inv_length; // 1 / |Ld|
   int falloff;      // 2 or 3
 };
 
@@ -67,16 +68,20 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   const double s0d = l0x * L.u[0] + l0y * L.u[1] + l0z * L.u[2];
   const double s1d = l1x * L.u[0] + l1y * L.u[1] + l1z * L.u[2];
   const double hx = l0x - L.u[0] * s0d, hy = l0y - L.u[1] * s0d, hz = l0z - L.u[2] * s0d;
+  // a = H.N and b = u.N in double too: in float a nearly perpendicular H and N would leave a and b
+  // with an absolute error of eps h, relative errors that no cancellation check sees.
+  const double ad = hx * nx + hy * ny + hz * nz;
+  const double bd = L.u[0] * nx + L.u[1] * ny + L.u[2] * nz;
   const double c0d = l0x * nx + l0y * ny + l0z * nz;
   const double c1d = l1x * nx + l1y * ny + l1z * nz;
   const double r0sq = l0x * l0x + l0y * l0y + l0z * l0z, r1sq = l1x * l1x + l1y * l1y + l1z * l1z;
   // Float from here on, in lengths divided by scale.
-  const float scale = float(std::sqrt(r0sq > r1sq ? r0sq : r1sq));
+  const float scale = std::sqrt(float(r0sq > r1sq ? r0sq : r1sq));
   const float inv = scale > 0.f ? 1.f / scale : 0.f;
   const float hxf = float(hx) * inv, hyf = float(hy) * inv, hzf = float(hz) * inv;
   const float h = std::sqrt(hxf * hxf + hyf * hyf + hzf * hzf);
-  const float a = hxf * float(nx) + hyf * float(ny) + hzf * float(nz);
-  const float b = float(L.u[0]) * float(nx) + float(L.u[1]) * float(ny) + float(L.u[2]) * float(nz);
+  const float a = float(ad) * inv;
+  const float b = float(bd);
   const float s0 = float(s0d) * inv, s1 = float(s1d) * inv;
   const float ell = float(L.length) * inv;
   const float c0 = float(c0d), c1 = float(c1d);
@@ -104,9 +109,11 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   if constexpr (kFalloff == 2) {
     const float rab = ra * rb;
     g = dd / (rab * (ra + rb));
-    const float f_same = dd / (rab * (hi * ra + lo * rb));
-    const float f_split = (hi / rb - lo / ra) / (h2 > 0.f ? h2 : 1.f);
-    f = same_sign ? f_same : f_split;
+    // Same sign: dd / (ra rb (sb ra + sa rb)); foot inside: (sb/rb - sa/ra) / h^2 =
+    // (sb ra - sa rb) / (ra rb h^2), a sum of two positive terms. One division for either.
+    const float num = same_sign ? dd : hi * ra - lo * rb;
+    const float den = rab * (same_sign ? hi * ra + lo * rb : (h2 > 0.f ? h2 : 1.f));
+    f = num / den;
   } else {
     g = dd / (2.f * ra2 * rb2);
     const float x = h2 + lo * hi, y = h * delta;
@@ -122,9 +129,11 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   const float af = a * f, bg = b * g;
   const float sum = af + bg;
   const float mag = (af < 0.f ? -af : af) + (bg < 0.f ? -bg : bg);
-  float scale_n = inv * inv;
+  // (a F + b G) / ell * scale^-n with ell = |Ld| / scale: the division by ell is a product with
+  // the per-light 1/|Ld|.
+  float scale_n = inv;
   if constexpr (kFalloff == 3) scale_n *= inv;
-  const float value = (sum > 0.f ? sum : 0.f) / ell * scale_n;
+  const float value = (sum > 0.f ? sum : 0.f) * scale_n * L.inv_length;
   const bool stiff = (!empty) & ((h < 1e-12f) | (ell < 1e-5f) | (mag > 16.f * (sum < 0.f ? -sum : sum)) |
                                 !(value < 3.0e38f));
   result = empty | stiff ? 0.f : value;

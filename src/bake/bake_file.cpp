@@ -35,6 +35,7 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
 
   LightingRequest request;
   request.shade.with_specular = false;  // a bake stores the view-independent diffuse light
+  request.float_batch = options.float_batch;
   request.progress = options.progress;
   request.cancel = options.cancel;
   t = Clock::now();

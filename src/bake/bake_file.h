@@ -14,6 +14,7 @@ namespace vlit {
 struct BakeFileOptions {
   std::string lights_path;        // LIGHTS.json, may be empty
   bool use_file_lights = true;    // keep the asset's KHR_lights_punctual lights
+  bool float_batch = true;        // diffuse in the float SIMD batch kernels where they apply (LightingRequest)
   BakeOptions encode;             // target attribute, format, exposure, unlit
   // Polled between chunks of vertices; when it becomes true the bake stops with an error and
   // writes nothing. May be null.

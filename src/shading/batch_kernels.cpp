@@ -62,6 +62,7 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
           b.q1[0] = k.q1.x; b.q1[1] = k.q1.y; b.q1[2] = k.q1.z;
           b.u[0] = ld.x / len; b.u[1] = ld.y / len; b.u[2] = ld.z / len;
           b.length = len;
+          b.inv_length = float(1 / len);
           b.falloff = int(k.falloff);
           c.light = b;
         } else if constexpr (std::is_same_v<K, PreparedAreaLight<double>>) {

@@ -180,6 +180,18 @@ TEST_CASE("linear batch: random segments, falloff 2 and 3") {
   }
 }
 
+TEST_CASE("linear batch: a floor under a tube (the benchmark's set)") {
+  Rng rng(3);
+  Points pts;
+  for (int i = 0; i < 8192; ++i)
+    pts.add({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-0.2, 0.2)},
+            {rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), 1});
+  for (double falloff : {2.0, 3.0}) {
+    const Comparison c = compare("linear floor", linear_source({-1, -0.3, 1.5}, {1, 0.3, 1.6}, falloff), pts);
+    CHECK(c.worst <= kFloatBar);
+  }
+}
+
 TEST_CASE("linear batch: stiff cases") {
   for (double falloff : {2.0, 3.0}) {
     CAPTURE(falloff);

@@ -1,21 +1,22 @@
-// The bake's float batch path: one light's diffuse over a chunk of vertices with a float SIMD
-// batch kernel (shading/batch_kernels.h), the lanes a kernel flags as stiff recomputed with the
-// scalar double kernel. Used by light_vertices.cpp for the lights the scene plan gives a batch
-// kernel (diffuse only); everything else stays on the scalar path there.
+// The bake's float batch path: the diffuse of the lights the scene plan gives a float batch kernel
+// (shading/batch_kernels.h), over a chunk of vertices; the lanes a kernel flags as stiff are
+// recomputed with the scalar double kernel. Used by light_vertices.cpp; everything else stays on
+// the scalar path there.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
-#include "shading/batch_kernels.h"
+#include "plan/scene_plan.h"
 
 namespace vlit {
 
-// A chunk of shading points as structure of arrays, plus the per-lane scratch of one light.
+// Scratch for one chunk of shading points as structure of arrays, reused from chunk to chunk.
 class BatchChunk {
  public:
-  // Copies `count` shading points (position, unit normal) into the arrays.
-  void fill(const ShadingPoint<double>* points, long count);
+  void resize(long count);
+  // Copies points [begin, end) (position, unit normal) into the arrays.
+  void fill(const ShadingPoint<double>* points, long begin, long end);
   BatchPoints points() const { return {px_.data(), py_.data(), pz_.data(), nx_.data(), ny_.data(), nz_.data()}; }
   BatchOutput scratch() { return {response_.data(), stiff_.data()}; }
   long count() const { return count_; }
@@ -28,11 +29,13 @@ class BatchChunk {
   std::vector<std::uint8_t> stiff_;
 };
 
-// diffuse[v] += radiance * Id(v) for every vertex of the chunk, all cores. `points` are the same
-// shading points the chunk was filled from (for the stiff lanes). The result for a vertex does not
-// depend on the number of threads: work is split in whole blocks and a lane's float result is the
-// same in any vector width (shaders_cpu/batch/batch_points.h).
-void accumulate_light_batch(const PreparedLight<double>& light, const BatchLight& batch, const ShadeOptions& options,
-                            BatchChunk& chunk, const ShadingPoint<double>* points, Vec3d* diffuse);
+// diffuse[v] += radiance * Id(v) for every vertex of the chunk and every light of `lights`
+// (indices into plan.lights, each with plan.batch_of_light[i].light set), in that order, all
+// cores, in one parallel region: every thread takes the same blocks of vertices for every light
+// (static schedule), so there is no barrier between lights, which matters on a loaded machine.
+// The result for a vertex does not depend on the number of threads: blocks are whole and a lane's
+// float result is the same in any vector width (shaders_cpu/batch/batch_points.h).
+void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,
+                             const ShadingPoint<double>* points, long count, Vec3d* diffuse);
 
 }  // namespace vlit

@@ -65,6 +65,7 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
   std::vector<Vec3d> diffuse(kChunk), specular(options.with_specular ? kChunk : 0);
   std::vector<ShadingPoint<double>> points(kChunk);  // per vertex, computed once for all lights
   BatchChunk batch;                                   // the same points as arrays, for batch kernels
+  std::vector<int> batch_lights;
   for (std::size_t pi = 0; pi < scene.primitives.size(); ++pi) {
     const ScenePrimitive& prim = scene.primitives[pi];
     const double shininess = phong_from_metallic_roughness(scene.material_of(prim)).shininess;
@@ -83,17 +84,15 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         for (long v = 0; v < count; ++v)
           points[v] = make_shading_point(prim.positions[begin + v], prim.normals[begin + v], eye, shininess);
       }
-      bool batch_filled = false;
-      for (int li : plan.lights_of_primitive[pi]) {
-        if (const auto& b = plan.batch_of_light[li].light) {
-          if (!batch_filled) batch.fill(points.data(), count);
-          batch_filled = true;
-          accumulate_light_batch(plan.lights[li], *b, options, batch, points.data(), diffuse.data());
-        } else {
+      // Lights with a float batch kernel first, all in one parallel region; then the others.
+      batch_lights.clear();
+      for (int li : plan.lights_of_primitive[pi])
+        if (plan.batch_of_light[li].light) batch_lights.push_back(li);
+      accumulate_batch_lights(plan, batch_lights, batch, points.data(), count, diffuse.data());
+      for (int li : plan.lights_of_primitive[pi])
+        if (!plan.batch_of_light[li].light)
           accumulate_light(plan.lights[li], options, points.data(), count, diffuse.data(),
                            options.with_specular ? specular.data() : nullptr);
-        }
-      }
       for (std::size_t v = begin; v < end; ++v) {
         result.diffuse[v] = to_output(diffuse[v - begin]);
         if (options.with_specular) result.specular[v] = to_output(specular[v - begin]);

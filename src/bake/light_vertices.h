@@ -35,8 +35,8 @@ struct LightingRequest {
 ScenePlan plan_lighting(const Scene& scene, const LightingRequest& request);
 
 // One VertexLight per scene primitive, in the same order. Deterministic: the result does not
-// depend on the number of threads (each vertex is computed independently, lights summed in the
-// plan's order).
+// depend on the number of threads (each vertex is computed independently, lights summed in a fixed
+// order: the plan's lights with a float batch kernel, then the others, each group in the plan's order).
 std::vector<VertexLight> light_scene_vertices(const Scene& scene, const LightingRequest& request);
 std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePlan& plan, const LightingRequest& request);
 

@@ -16,15 +16,24 @@
 // in the tangent plane, is added after the last edge. For a convex polygon there is at most one
 // exit and one entry, so this equals Sutherland-Hodgman followed by the contour sum. Non-convex
 // lights stay on the scalar kernel (the scene plan checks convexity).
-// Per-light constants (make_area_batch_light): the centre c (double), the offsets d_i = Q_i - c,
+// Per-light constants (batch_kernel_for in src/shading/batch_kernels.cpp): the centre c (double), the offsets d_i = Q_i - c,
 // the emitting normal, one- or two-sidedness, the vertex count (any N <= kMaxAreaVertices).
 //
+// Small lights: when the light's radius is below kAreaBatchSmallLightRatio |D| (every edge seen
+// under beta < 0.41), the terms are summed in the reference-subtracted form of
+// area_diffuse_contour.h (g_ref = 1/|D|^2 times twice the area vector, plus (g_i - g_ref) terms
+// that carry no cancellation), with beta/sin(beta) - 1 from its series; a block of lanes computes
+// the plain form, the small-light form or both (selected per lane) as its lanes need.
+//
 // Stiff lanes (flagged for the scalar double kernel; tests/kernels/batch/batch_kernels_test.cpp
-// "area batch: stiff cases"): cancellation. Each term has an absolute rounding error of a few
-// float epsilons times beta_i, so a lane is flagged when Σ beta_i > kAreaBatchCancellation |Σ
-// beta_i cos delta_i|: a light far away compared with its size (the double kernel's small-light
-// reformulation), seen edge-on, or mostly below the horizon. The bound is set so that the
-// measured error stays under the 1e-5 float bar (docs/performance.md).
+// "area batch: stiff cases"): cancellation. Every term carries an absolute rounding error of a few
+// float epsilons times its magnitude bound (beta_i in the plain form, |g_i - g_ref| |a_i x a_{i+1}|
+// and g_ref |d_i x d_{i+1}| in the small-light form), so a lane is flagged when the sum of the
+// bounds exceeds kAreaBatchCancellation |Σ|: the light seen grazing or cut by the horizon, where
+// the result is small against its terms. The error of an unflagged lane grows about linearly with
+// (bounds / |Σ|); 32 keeps it under the 1e-5 bar with some margin on the test's random set and on
+// the benchmark's floor (max printed by both: "area random", bench/batch_kernels_bench).
+// Also flagged: |D| > 1e8, where the small-light denominators would overflow float.
 #pragma once
 
 #include <cmath>
@@ -36,7 +45,7 @@ namespace vlit {
 
 inline constexpr int kAreaBatchMaxVertices = 64;
 inline constexpr int kAreaBatchBlock = 128;      // lanes per edge-major block
-inline constexpr float kAreaBatchCancellation = 24.f;
+inline constexpr float kAreaBatchCancellation = 32.f;
 inline constexpr double kAreaBatchSmallLightRatio = 0.2;  // radius / |D| below which the small-light form is used
 
 struct AreaBatchLight {

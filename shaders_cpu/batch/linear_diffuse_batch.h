@@ -13,7 +13,8 @@
 //                                       or (sb/rb - sa/ra) / h^2 (foot inside), dd = delta (sa + sb);
 //   n = 3: G = dd / (2 ra^2 rb^2),  F = delta/(2X) [delta^2 φ(z)/X^2 + 2/(X(1+z^2))] (X = h^2 + sa sb
 //          > 0, z = h delta / X) or (delta(2h^2 - X)/(X^2 + Y^2) + atan2(Y, X)/h) / (2h^2), Y = h delta.
-// Per-light constants (computed once, make_linear_batch_light): Q0, Q1, u = Ld/|Ld|, |Ld|.
+// Per-light constants (computed once, batch_kernel_for in src/shading/batch_kernels.cpp): Q0, Q1,
+// u = Ld/|Ld|, |Ld| and 1/|Ld| (the scalar kernel recomputes Ld per point, linear_light.h).
 //
 // Precision: per lane, L0 = Q0 - P and L1 = Q1 - P, their projections s0 = L0.u, s1 = L1.u, the
 // perpendicular H = L0 - u s0, a = H.N, b = u.N and the horizon values L0.N, L1.N are formed in double (the
@@ -25,6 +26,8 @@
 // underflow float; includes P on the segment), a segment shorter than 1e-5 scale (the point-light
 // limit), and cancellation: |a F| + |b G| > 16 |a F + b G| (a light almost edge-on to the tangent
 // plane, where float rounding of the two terms would exceed the 1e-5 bar).
+// Measured: max relative error of unflagged lanes 5.6e-7 (random set), 2.7e-6 (floor under a tube);
+// `./build/release/tests/batch_kernel_tests -s -tc='linear*'`.
 // Measured accuracy against the double scalar kernel: docs/performance.md, test above.
 #pragma once
 

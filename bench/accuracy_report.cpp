@@ -35,10 +35,12 @@
 #include "kernels/area/area_reference.h"
 #include "kernels/linear/linear_reference.h"
 
+#include "accuracy_blender.h"
 #include "accuracy_disk_reference.h"
 #include "accuracy_methods.h"
 #include "area_light.h"
 #include "bake/light_vertices.h"
+#include "bake/vertex_color_bake.h"
 #include "disk_light.h"
 #include "linear_light.h"
 #include "scene/load_scene.h"
@@ -181,6 +183,7 @@ struct Options {
   fs::path out_dir;
   std::string asset;
   int reps = 5;
+  fs::path blender_dir;  // Cycles bakes of bench/blender_bake.py (scripts/blender-compare.sh); may be empty
 };
 
 int g_total_nonfinite = 0;
@@ -215,6 +218,24 @@ const auto kAlways = [](const auto&) { return true; };
 // Case generation helpers
 
 Vec3d to_float_grid(const Vec3d& v) { return static_cast<Vec3d>(static_cast<Vec3f>(v)); }
+
+// A unit direction rounded to float with |v| <= 1 exactly (in long double): its largest component
+// is moved towards zero one float step at a time until the norm is at most 1. The kernels take Rv
+// as a unit vector and clamp cos α to 1 (shaders_cpu/linear_specular_peak.h); plain rounding can
+// give |Rv| = 1 + 1e-8, and then the literal integrand max(0, Rv.L̂)^m of the reference exceeds 1
+// near the peak by up to m x 1e-8: with m = 1e4 the two differ by ~1e-6 relative, a difference
+// of inputs, not of methods (docs/linear-lights.md, "Measured accuracy").
+Vec3d unit_on_float_grid(const Vec3d& v) {
+  Vec3f f = static_cast<Vec3f>(normalize(v));
+  auto norm2 = [](const Vec3f& x) { return (long double)x.x * x.x + (long double)x.y * x.y + (long double)x.z * x.z; };
+  for (int i = 0; i < 8 && norm2(f) > 1.0L; ++i) {
+    float* big = std::fabs(f.x) >= std::fabs(f.y) && std::fabs(f.x) >= std::fabs(f.z) ? &f.x
+                 : std::fabs(f.y) >= std::fabs(f.z)                                   ? &f.y
+                                                                                      : &f.z;
+    *big = std::nextafter(*big, 0.0f);
+  }
+  return static_cast<Vec3d>(f);
+}
 
 Vec3d random_unit(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
@@ -252,7 +273,7 @@ using LinX = linear_test::Typed<T>;
 Config round_config(Config c) {
   c.p = to_float_grid(c.p);
   c.n = to_float_grid(normalize(c.n));
-  c.rv = to_float_grid(normalize(c.rv));
+  c.rv = unit_on_float_grid(c.rv);
   c.q0 = to_float_grid(c.q0);
   c.q1 = to_float_grid(c.q1);
   c.shininess = double(float(c.shininess));
@@ -438,6 +459,7 @@ void init_stiff_table(StiffTable& t, const CaseSet<LinX>& s) {
 struct LinearSections {
   Section diffuse, specular;
   std::string peak_vs_max;  // markdown
+  std::string peak_vs_max_max;  // the peak's max error against the lobe's maximum, double
 };
 
 LinearSections linear_report(const Options& o) {
@@ -568,6 +590,7 @@ LinearSections linear_report(const Options& o) {
          << " lit ordinary cases is: min " << fmt(ratio.front()) << ", median " << fmt(ratio[ratio.size() / 2]) << ", max "
          << fmt(ratio.back()) << ".";
     out.peak_vs_max = md.str();
+    out.peak_vs_max_max = fmt(tmp.rows[0].d.max);
   }
   return out;
 }
@@ -954,11 +977,193 @@ DiskSections disk_report(const Options& o) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// End to end against Blender Cycles (bench/accuracy_blender.h, bench/blender_bake.py)
+
+// Where the end-to-end figure draws an error of exactly 0 (log scale).
+constexpr double kEndToEndZero = 1e-9;
+
+struct CyclesComparison {
+  std::string md;    // markdown: table and the time ratio, or why there is none
+  std::string plot;  // extra gnuplot clauses for the end-to-end figure (", 'file' using ...")
+  double ratio_at_best = NAN;  // Cycles time at its most accurate point / vlit default time
+  std::string finding;         // one sentence for "Findings", empty without Cycles data
+};
+
+CyclesComparison cycles_comparison(const Options& o) {
+  CyclesComparison out;
+  std::ostringstream md;
+  md << "### Against Blender Cycles\n\n";
+  if (o.blender_dir.empty() || o.asset.empty() || !fs::exists(o.asset)) {
+    md << "Blender was not available for this run (`scripts/blender-compare.sh` writes the Cycles bakes; "
+          "`scripts/accuracy-report.sh` runs it when `blender` is installed), so the report has no Cycles points.\n";
+    out.md = md.str();
+    return out;
+  }
+  const fs::path lights_path = o.blender_dir / "lights.json";
+  if (!fs::exists(lights_path)) {
+    md << "Blender was not available for this run: no `" << lights_path.string() << "`.\n";
+    out.md = md.str();
+    return out;
+  }
+  LoadedScene loaded = load_scene(o.asset, lights_path.string(), false);
+  Scene& scene = loaded.scene;
+  const CyclesData cy = read_cycles(o.blender_dir, scene);
+  if (!cy.available) {
+    md << "Blender was not available for this run (" << cy.why_not << ").\n";
+    out.md = md.str();
+    return out;
+  }
+  // vlit on the same lights, one thread, diffuse only (what `vlit bake` computes).
+  struct Setting { std::string name; double quad_tol; bool chains; };
+  const std::vector<Setting> settings{{"vlit reference: quadrature 1e-14", 1e-14, false},
+                                      {"vlit default: quadrature 1e-10", 1e-10, false},
+                                      {"vlit fast: quadrature 1e-6", 1e-6, false},
+                                      {"vlit on Cycles' scene: each tube as 32 point lights", 1e-10, true}};
+  omp_set_num_threads(1);
+  const std::vector<LightSource> lights = scene.lights;
+  std::vector<std::vector<float>> values;
+  std::vector<double> seconds;
+  for (const Setting& st : settings) {
+    scene.lights = st.chains ? as_point_chains(lights, kCyclesTubePoints) : lights;
+    LightingRequest req;
+    req.shade.with_specular = false;
+    req.shade.linear.quadrature_tolerance = st.quad_tol;
+    double best = 1e300;
+    std::vector<VertexLight> r;
+    for (int rep = 0; rep < (o.quick ? 1 : 3); ++rep) {
+      const auto t0 = std::chrono::steady_clock::now();
+      r = light_scene_vertices(scene, req);
+      best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    values.push_back(diffuse_red(r));
+    seconds.push_back(best);
+    std::fprintf(stderr, "  cycles comparison %-50s %.4f s\n", st.name.c_str(), best);
+  }
+  scene.lights = lights;
+  const std::vector<float>& ref = values[0];
+  std::size_t tris = 0;
+  for (const auto& p : scene.primitives) tris += p.triangles.size() / 3;
+  md << "Asset `" << fs::path(o.asset).filename().string() << "` (" << scene.vertex_count() << " vertices, " << tris
+     << " triangles) with lights Cycles can represent (`" << lights_path.filename().string()
+     << "`, written by this program: two linear lights of falloff 2, a rectangular area light, a point light; "
+        "no shadows on either side), baked by Cycles (Blender " << cy.version << ", `bench/blender_bake.py`: white "
+        "Diffuse BSDF, DIFFUSE pass, direct light, to a float colour attribute, one thread) and lit by vlit's "
+        "`light_scene_vertices` (diffuse only, as `vlit bake`; one thread, best of "
+     << (o.quick ? 1 : 3)
+     << " runs). Errors per vertex against vlit's reference setting, measured as in the table above (`max/top`, "
+        "`p99 rel`, `median rel`); Cycles' corners are matched to the asset's vertices by position and normal ("
+     << cy.runs.front().unmatched << " of " << scene.vertex_count()
+     << " vertices unmatched, left out). Light mapping and its check: `bench/blender_bake.py` (comments) and "
+        "the calibration below. Times: vlit's lighting stage; Cycles' `bpy.ops.object.bake` call, which includes its "
+        "scene synchronisation and BVH build (its glTF import, " << fmt(cy.import_seconds) << " s, is not counted, nor "
+        "vlit's load).\n\n";
+  md << "| method | samples | time (s) | max/top | p99 rel | median rel |\n|---|---|---|---|---|---|\n";
+  std::ofstream vdat(o.out_dir / "data" / "end-to-end-vlit-cycles-lights.dat");
+  std::ofstream cdat(o.out_dir / "data" / "end-to-end-cycles.dat");
+  char t[64];
+  for (std::size_t i = 0; i < settings.size(); ++i) {
+    const DiffuseError e = diffuse_error(values[i], ref);
+    std::snprintf(t, sizeof t, "%.4f", seconds[i]);
+    md << "| " << settings[i].name << " | - | " << t << " | " << fmt(e.max_rel_to_max) << " | " << fmt(e.p99_rel)
+       << " | " << fmt(e.med_rel) << " |\n";
+    if (i > 0)
+      vdat << "\"" << (settings[i].chains ? "vlit, point chains" : settings[i].name.substr(5, settings[i].name.find(':') - 5))
+           << "\" " << seconds[i] << " " << std::max(e.max_rel_to_max, kEndToEndZero) << "\n";
+  }
+  const DiffuseError floor_err = diffuse_error(values[3], ref);
+  std::vector<DiffuseError> cerr;
+  for (const CyclesRun& run : cy.runs) {
+    const DiffuseError e = diffuse_error(run.value, ref);
+    cerr.push_back(e);
+    std::snprintf(t, sizeof t, "%.3f", run.seconds);
+    md << "| Cycles | " << run.samples << " | " << t << " | " << fmt(e.max_rel_to_max) << " | " << fmt(e.p99_rel) << " | "
+       << fmt(e.med_rel) << " |\n";
+    cdat << "\"" << run.samples << "\" " << run.seconds << " " << e.max_rel_to_max << "\n";
+  }
+  md << "\nCycles' scene has " << as_point_chains(lights, kCyclesTubePoints).size()
+     << " lights (each tube is " << kCyclesTubePoints
+     << " point lights, the only stand-in with vlit's emission pattern: see `bench/blender_bake.py`); a Cycles "
+        "sample evaluates one of them, so the tubes' points share the samples with the panel and the point light. "
+        "A tube as one thin area light would need fewer samples but converges to another answer (its cos θ_l "
+        "emission).\n";
+  // Time ratio. Cycles' error falls as 1/sqrt(samples) (until the point-chain floor); vlit's
+  // default is more accurate than every Cycles point, so Cycles' time at its most accurate point
+  // over vlit's time is a lower bound of the ratio at equal error; the extrapolation to the error
+  // a unorm16 colour can show (1.5e-5) uses the 1/sqrt(N) law from the most accurate point.
+  const std::size_t best = cy.runs.size() - 1;
+  out.ratio_at_best = cy.runs[best].seconds / seconds[1];
+  const double e_best = cerr[best].max_rel_to_max;
+  const double target = 1.5e-5;
+  const double n_needed = cy.runs[best].samples * (e_best / target) * (e_best / target);
+  const double t_needed = cy.runs[best].seconds * n_needed / cy.runs[best].samples;
+  // Exponents of the errors against samples between the two most accurate points: the median
+  // checks the Monte Carlo law (-0.5); the max over vertices is dominated by rare outliers and
+  // falls irregularly.
+  double slope_med = NAN, slope_max = NAN;
+  if (cy.runs.size() >= 2) {
+    const double r = std::log(double(cy.runs[best].samples) / cy.runs[best - 1].samples);
+    slope_med = std::log(cerr[best].med_rel / cerr[best - 1].med_rel) / r;
+    slope_max = std::log(cerr[best].max_rel_to_max / cerr[best - 1].max_rel_to_max) / r;
+  }
+  const DiffuseError vlit_default = diffuse_error(values[1], ref);
+  const std::string vlit_default_err =
+      vlit_default.max_rel_to_max == 0 ? std::string("is identical to the reference after rounding to float")
+                                       : "differs from the reference by max/top " + fmt(vlit_default.max_rel_to_max);
+  char line[2048];
+  std::snprintf(line, sizeof line,
+                "\n**Time ratio at equal error.** Cycles' most accurate bake (%d samples) has max/top %s in %.3g s; vlit's "
+                "default bake %s, in %.3g s. So at equal error Cycles takes **at least %.0f times** as long as vlit "
+                "(its time at its best point over vlit's, vlit being more accurate there). Between Cycles' two most "
+                "accurate points the median error falls as N^%.2f (Monte Carlo: N^-0.5; the max as N^%.2f, driven by "
+                "rare outliers). By N^-0.5 from its best point, Cycles would need ~%.2g samples, ~%.2g s, to reach "
+                "1.5e-5 (the unorm16 step): **~%.0e times** vlit's time, if its stand-in for the tubes allowed it: "
+                "the %d-point chains' own error (vlit on Cycles' scene against the reference) is %s, so a finer chain "
+                "would be needed, with more lights sharing the samples.\n",
+                cy.runs[best].samples, fmt(e_best).c_str(), cy.runs[best].seconds, vlit_default_err.c_str(), seconds[1],
+                out.ratio_at_best, slope_med, slope_max, n_needed, t_needed, t_needed / seconds[1], kCyclesTubePoints,
+                fmt(floor_err.max_rel_to_max).c_str());
+  md << line;
+  std::snprintf(line, sizeof line,
+                "Cycles' bake (one thread) needs %.3g s for max/top %s at %d samples, where vlit's default bake lights the "
+                "same asset in %.3g s at rounding level: at equal error Cycles is at least %.0fx slower (extrapolated to the "
+                "unorm16 step by N^-0.5: ~%.0ex). vlit's defaults need no sample count and stay the defaults.",
+                cy.runs[best].seconds, fmt(e_best).c_str(), cy.runs[best].samples, seconds[1], out.ratio_at_best,
+                t_needed / seconds[1]);
+  out.finding = line;
+  if (!cy.calibration.empty())
+    md << "\nCalibration of the light mapping (`blender -b --factory-startup --python bench/blender_bake.py -- "
+          "--calibrate --out DIR`: a plane under one light at a time, Cycles' bake over the value computed by hand; "
+          "the spot with Cycles 3.4's extra cos ψ divided out, see `bench/blender_bake.py`):\n\n```\n"
+       << cy.calibration << "```\n";
+  if (std::ifstream cli(o.blender_dir / "vlit-bake.txt"); cli) {
+    std::ostringstream s;
+    s << cli.rdbuf();
+    md << "\nThe same bake with the command line (`scripts/blender-compare.sh`: `vlit bake --explain --color-format "
+          "float`, all cores), stage times of successive runs (the machine is shared: their spread is other "
+          "processes' load, not vlit's):\n\n```\n" << s.str() << "```\n";
+  }
+  out.plot = ", \\\n     'data/end-to-end-cycles.dat' using 2:3 with linespoints pt 9 ps 1.5 title 'Cycles (comparison lights)', "
+             "\\\n     '' using 2:3:1 with labels offset 1,-0.7 left font ',8' notitle, "
+             "\\\n     'data/end-to-end-vlit-cycles-lights.dat' using 2:3 with points pt 13 ps 1.5 title 'vlit (comparison lights)', "
+             "\\\n     '' using 2:3:1 with labels rotate by 30 offset 0.5,0.7 left font ',8' notitle";
+  out.md = md.str();
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
 // End to end: a real asset lit by linear and area lights
 
 struct EndToEnd {
   bool done = false;
   std::string md;
+  // COLOR_0 encodings of the default bake: largest |stored - exact| over unclipped channels,
+  // vertices with a channel clipped above 1, encode time, bytes per vertex of the attribute.
+  struct Format { std::string name; double max_quantization = NAN; std::size_t clipped = 0; double seconds = 0; int bytes = 0; };
+  std::vector<Format> formats;
+  double light_top = 0;       // largest diffuse channel of the default bake
+  double default_seconds = 0;  // lighting time of the default setting
+  double diffuse_max_rel = NAN;  // default vs reference, diffuse max/top
+  std::string cycles_finding;    // one sentence for the findings, empty without Cycles data
 };
 
 EndToEnd end_to_end(const Options& o) {
@@ -997,7 +1202,8 @@ EndToEnd end_to_end(const Options& o) {
   };
   linear({-1.2, 1.3, 0.8}, {1.2, 1.3, 0.8}, 2, 1);      // tube above the front
   linear({1.6, -1, 0.4}, {1.6, 1.2, -0.2}, 1.5, 1);     // vertical tube at the side, falloff 1.5
-  area({{-0.8, 1.8, -0.8}, {-0.8, 1.8, 0.8}, {0.8, 1.8, 0.8}, {0.8, 1.8, -0.8}}, 1);  // ceiling panel facing down
+  // Ceiling panel facing down: counter-clockwise seen from below (docs/lights-json.md).
+  area({{0.8, 1.8, -0.8}, {0.8, 1.8, 0.8}, {-0.8, 1.8, 0.8}, {-0.8, 1.8, -0.8}}, 1);
   area({{-1.5, -0.6, 1.9}, {-0.3, -0.6, 1.9}, {-0.9, 0.6, 1.9}}, 1);                  // front triangle facing -z... flipped below
   std::reverse(scene.lights.back().polygon.begin(), scene.lights.back().polygon.end());
   const Vec3d eye = c + Vec3d{0.3, 0.4, 3} * s;
@@ -1063,6 +1269,25 @@ EndToEnd end_to_end(const Options& o) {
     }
     float_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
+  // COLOR_0 encodings of the default bake (what the colour format adds to the lighting error).
+  {
+    const struct { const char* name; ColorFormat format; int bytes; } kFormats[] = {
+        {"unorm16", ColorFormat::kUnorm16, 8}, {"unorm8", ColorFormat::kUnorm8, 4}, {"float", ColorFormat::kFloat, 16}};
+    for (const auto& f : kFormats) {
+      tinygltf::Model model = loaded.gltf->model;
+      BakeOptions bo;
+      bo.format = f.format;
+      const auto t0 = std::chrono::steady_clock::now();
+      const BakeReport rep = bake_vertex_colors(model, scene, results[1], bo);
+      const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      e.formats.push_back({std::string(f.name) + (f.format == BakeOptions{}.format ? " (default)" : ""),
+                           f.format == ColorFormat::kFloat ? 0.0 : rep.max_quantization_error, rep.clipped_vertices, sec,
+                           f.bytes});
+    }
+    for (const auto& vl : results[1])
+      for (const Vec3f& x : vl.diffuse) e.light_top = std::max(e.light_top, double(std::max({x.x, x.y, x.z})));
+    e.default_seconds = seconds[1];
+  }
   // Errors per vertex (luminance-free: the red channel; all lights are white) against the reference.
   struct Err { double max_rel_to_max = 0, p99_rel = 0, med_rel = 0; int nonfinite = 0; };
   auto compare = [&](const std::vector<VertexLight>& a, bool specular) {
@@ -1107,6 +1332,7 @@ EndToEnd end_to_end(const Options& o) {
   std::ofstream dat(o.out_dir / "data" / "end-to-end.dat");
   for (std::size_t i = 0; i < settings.size(); ++i) {
     const Err d = compare(results[i], false);
+    if (i == 1) e.diffuse_max_rel = d.max_rel_to_max;
     const bool has_spec = settings[i].shade.specular.method != SpecularMethod::kNone;
     const Err sp = has_spec ? compare(results[i], true) : Err{NAN, NAN, NAN, 0};
     char t[32];
@@ -1115,7 +1341,7 @@ EndToEnd end_to_end(const Options& o) {
        << fmt(sp.max_rel_to_max) << " | " << fmt(sp.p99_rel) << " |\n";
     if (i > 0)
       dat << "\"" << settings[i].name.substr(0, settings[i].name.find(':')) << "\" " << seconds[i] << " "
-          << std::max(d.max_rel_to_max, 1e-18) << " " << (has_spec ? std::max(sp.max_rel_to_max, 1e-18) : NAN) << "\n";
+          << std::max(d.max_rel_to_max, kEndToEndZero) << " " << (has_spec ? std::max(sp.max_rel_to_max, kEndToEndZero) : NAN) << "\n";
   }
   {
     const Err d = compare(float_result, false), sp = compare(float_result, true);
@@ -1123,20 +1349,26 @@ EndToEnd end_to_end(const Options& o) {
     std::snprintf(t, sizeof t, "%.3f", float_seconds);
     md << "| default settings in float (own loop) | " << t << " | " << fmt(d.max_rel_to_max) << " | " << fmt(d.p99_rel)
        << " | " << fmt(sp.max_rel_to_max) << " | " << fmt(sp.p99_rel) << " |\n";
-    dat << "\"float default\" " << float_seconds << " " << std::max(d.max_rel_to_max, 1e-18) << " "
-        << std::max(sp.max_rel_to_max, 1e-18) << "\n";
+    dat << "\"float default\" " << float_seconds << " " << std::max(d.max_rel_to_max, kEndToEndZero) << " "
+        << std::max(sp.max_rel_to_max, kEndToEndZero) << "\n";
   }
-  md << "\n![End-to-end error against lighting time](images/accuracy/end-to-end.png)\n";
+  const CyclesComparison cycles = cycles_comparison(o);
+  e.cycles_finding = cycles.finding;
+  md << "\n![End-to-end error against lighting time](images/accuracy/end-to-end.png)\n\nIn the figure, an error of "
+        "0 (identical after rounding to float) is drawn at 1e-9.\n";
+  md << "\n" << cycles.md;
   std::ofstream gp(o.out_dir / "data" / "end-to-end.gp");
   gp << "set terminal pngcairo size 1000,600 font ',10'\nset output 'images/accuracy/end-to-end.png'\n"
-        "set logscale xy\nset format y '1e%T'\nset grid\nset key top right\n"
+        "set logscale xy\nset format y '1e%T'\nset grid\nset key top right\nset yrange [2e-10:*]\n"
         "set xlabel 'total lighting time, one thread (s)'\nset ylabel 'max |error| / max |reference| over the asset'\n"
+        "set label 'error 0 (identical in float) drawn at 1e-9' at graph 0.02, first 4e-10 font ',8'\n"
         "set title 'End to end: "
      << fs::path(o.asset).filename().string()
-     << " lit by 2 linear + 2 area lights'\n"
+     << ": error against lighting time'\n"
         "plot 'data/end-to-end.dat' using 2:3 with points pt 7 ps 1.5 title 'diffuse (COLOR_0)', \\\n"
         "     '' using 2:4 with points pt 5 ps 1.5 title 'specular', \\\n"
-        "     '' using 2:3:1 with labels offset 1,0.7 left font ',8' notitle\n";
+        "     '' using 2:3:1 with labels rotate by 30 offset 0.5,0.7 left font ',8' notitle"
+     << cycles.plot << "\n";
   e.done = true;
   e.md = md.str();
   return e;
@@ -1209,7 +1441,7 @@ std::string cpu_name() {
 
 
 // Definitions, what each default promises, and the recommendations, with the numbers of this run.
-std::string body_text(const Options& o, const std::vector<Section*>& sec, const LinearSections& lin) {
+std::string body_text(const Options& o, const std::vector<Section*>& sec, const LinearSections& lin, const EndToEnd& e2e) {
   const Section& ld = *sec[0];
   const Section& ls = *sec[1];
   const Section& ad = *sec[2];
@@ -1235,8 +1467,6 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
   };
   const Row* closed2 = find_row(ld, "closed form n=2");
   const Row* q4 = find_row(ld, "adaptive GL tol 0.0001", "n=2 forced");
-  const Row* q10 = find_row(ld, "adaptive GL tol 1e-10", "n=2 forced");
-  const Row* q10h = find_row(ld, "adaptive GL tol 1e-10", "n=1.5");
   const Row* q12 = find_row(ld, "adaptive GL tol 1e-12", "n=2 forced");
   const Row* gl64 = find_row(ld, "fixed GL 64");
   const Row* st4096 = find_row(ld, "stratified 4096");
@@ -1244,7 +1474,6 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
   const Row* lpeak = find_row(ls, "peak");
   const Row* lnb4 = find_row(ls, "neighbourhood K=4");
   const Row* lex3 = find_row(ls, "exact tol 0.001");
-  const Row* lex9 = find_row(ls, "exact tol 1e-09");
   const Row* acont = find_row(ad, "contour");
   const Row* apeak = find_row(as, "peak");
   const Row* anb4 = find_row(as, "neighbourhood K=4");
@@ -1274,34 +1503,84 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
      << "- **Float**: the same method instantiated with T = float. The kernels (closed forms, quadratures, area "
         "kernels) compute float in double internally and round once; the baselines written for this report (fixed "
         "Gauss-Legendre, Monte Carlo: `bench/accuracy_methods.h`) really compute in float.\n"
+     << "- **Rv** of the linear cases is rounded to float with |Rv| ≤ 1: a rounded unit "
+        "vector can be 1e-8 longer than 1, and with m = 1e4 the kernels' clamp cos α ≤ 1 then differs from the "
+        "reference's literal integrand by ~1e-6 (docs/linear-lights.md, \"Rv a little longer than 1\").\n"
      << "- **Ordinary cases**: linear — " << (o.quick ? 24 : 1024) << " seeded segments at distance 1 from P, length "
         "0.1..10, normals and Rv biased towards the light, m log-uniform in [1, 1000]; area — " << (o.quick ? 8 : 256)
      << " convex 3..6-gons of size 0.2..1.5 at distance 1..3; disk — " << (o.quick ? 6 : 96)
      << " disks of radius 0.2..1.5 at distance 1..3. Stiff cases: the tables after each section.\n\n";
 
+  // The defaults as the code sets them (not typed here): the library's option structs.
+  const ShadeOptions def_shade{};
+  const BakeOptions def_bake{};
+  auto method_name = [](SpecularMethod m) {
+    switch (m) {
+      case SpecularMethod::kPeak: return std::string("peak");
+      case SpecularMethod::kNeighborhood: return std::string("neighborhood");
+      case SpecularMethod::kExact: return std::string("exact");
+      default: return std::string("none");
+    }
+  };
+  auto g = [](double x) { char b[32]; std::snprintf(b, sizeof b, "%g", x); return std::string(b); };
+  const std::string qtol = g(def_shade.linear.quadrature_tolerance);
+  const std::string etol = g(def_shade.specular.exact_tolerance);
+  const std::string kdef = std::to_string(def_shade.specular.neighborhood_samples);
+  const Row* qdef = find_row(ld, "adaptive GL tol " + qtol, "n=1.5");
+  const Row* qdef2 = find_row(ld, "adaptive GL tol " + qtol, "n=2 forced");
+  const Row* lexd = find_row(ls, "exact tol " + etol);
+  const Row* aexd = find_row(as, "exact tol " + etol);
+  const Row* lnbd = find_row(ls, "neighbourhood K=" + kdef);
+  const Row* anbd = find_row(as, "neighbourhood K=" + kdef);
+  const Row* ddef = find_row(dd, "diffuse, tol " + g(kDiskDefaultTolerance));
+  const Row* dsdef = find_row(ds, "exact specular, tol " + g(kDiskDefaultTolerance));
+  const char* fmt_name = def_bake.format == ColorFormat::kUnorm16 ? "unorm16" : def_bake.format == ColorFormat::kUnorm8 ? "unorm8" : "float";
   md << "## What each default promises, measured\n\n"
-     << "| setting | promise | measured here (ordinary: max; stiff: max over the table) | cost |\n|---|---|---|---|\n"
-     << "| linear diffuse, integer n (closed forms) | rounding only | double " << stat(closed2, true, "max")
-     << " / stiff " << stiff_max(ld, "closed form", 0) << "; float " << stat(closed2, false, "max") << " / stiff "
-     << stiff_max(ld, "closed form", 1) << " | " << stat(closed2, true, "ns") << " |\n"
-     << "| linear diffuse, real n: `quadrature_tolerance` 1e-10 (default) | relative 1e-10 | n=1.5: "
-     << stat(q10h, true, "max") << "; forced n=2: " << stat(q10, true, "max") << " / stiff "
-     << stiff_max(ld, "adaptive GL tol 1e-10", 0) << " | " << stat(q10h, true, "ns") << " |\n"
-     << "| `SpecularMethod::kPeak` (default) | the lobe's maximum over the light (paper eq. 7-8, 11-12) | vs the "
-        "exact integral: linear " << stat(lpeak, true, "max") << ", area " << stat(apeak, true, "max")
-     << " (see below: it is not an estimate of the integral) | linear " << stat(lpeak, true, "ns") << ", area "
-     << stat(apeak, true, "ns") << " |\n"
-     << "| `kExact`, `exact_tolerance` 1e-9 | relative 1e-9 | linear " << stat(lex9, true, "max") << " / stiff "
-     << stiff_max(ls, "exact tol 1e-09", 0) << "; area " << stat(aex9, true, "max") << " / stiff "
-     << stiff_max(as, "exact tol 1e-09", 0) << " | linear " << stat(lex9, true, "ns") << ", area "
-     << stat(aex9, true, "ns") << " |\n"
-     << "| area diffuse (contour) | rounding only | double " << stat(acont, true, "max") << " / stiff "
-     << stiff_max(ad, "contour", 0) << "; float " << stat(acont, false, "max") << " | " << stat(acont, true, "ns")
+     << "Every default of the library's option structs (`ShadeOptions{}`, `BakeOptions{}`, `kDiskDefaultTolerance`; "
+        "the values below are read from them, not typed), where it acts, what it promises and what this run measured. "
+        "`vlit bake` lights the diffuse only (`with_specular = false`: `COLOR_0` is view-independent), so the specular "
+        "settings act on `vlit render` and `vlit probe` (`--specular`, default `"
+     << method_name(def_shade.specular.method) << "`) and not on a bake.\n\n"
+     << "| default (from the code) | used by | promise | measured here (ordinary: max; stiff: max over the table) | cost |\n"
+        "|---|---|---|---|---|\n"
+     << "| linear diffuse, integer n: closed forms (no option) | bake, render, probe | rounding only | double "
+     << stat(closed2, true, "max") << " / stiff " << stiff_max(ld, "closed form", 0) << "; float "
+     << stat(closed2, false, "max") << " / stiff " << stiff_max(ld, "closed form", 1) << " | " << stat(closed2, true, "ns")
      << " |\n"
-     << "| disk, tolerance 1e-6 (default) | bracket width ≤ 1e-6 relative, else 64 edges | diffuse "
-     << stat(d6, true, "max") << " / stiff " << stiff_max(dd, "diffuse, tol 1e-06", 0) << "; exact specular "
-     << stat(ds6, true, "max") << " | diffuse " << stat(d6, true, "ns") << ", exact specular " << stat(ds6, true, "ns")
-     << " |\n\n";
+     << "| `linear.quadrature_tolerance` = " << qtol << " (linear diffuse, non-integer n) | bake, render, probe | relative "
+     << qtol << " | n=1.5: " << stat(qdef, true, "max") << "; forced n=2: " << stat(qdef2, true, "max") << " / stiff "
+     << stiff_max(ld, "adaptive GL tol " + qtol, 0) << " | " << stat(qdef, true, "ns") << " |\n"
+     << "| `specular.method` = " << method_name(def_shade.specular.method)
+     << " | render, probe | the lobe's maximum over the light (paper eq. 7-8, 11-12), not the integral | vs the "
+        "exact integral: linear " << stat(lpeak, true, "max") << ", area " << stat(apeak, true, "max")
+     << "; vs the lobe's maximum (linear): " << lin.peak_vs_max_max << " | linear " << stat(lpeak, true, "ns") << ", area "
+     << stat(apeak, true, "ns") << " |\n"
+     << "| `specular.neighborhood_samples` = " << kdef << " (only with `neighborhood:K`) | render, probe | mean lobe "
+        "near the peak (not the integral) | vs the exact integral, median: linear " << stat(lnbd, true, "med")
+     << ", area " << stat(anbd, true, "med") << " | linear " << stat(lnbd, true, "ns") << ", area "
+     << stat(anbd, true, "ns") << " |\n"
+     << "| `specular.exact_tolerance` = " << etol << " (only with `exact`) | render, probe | relative " << etol
+     << " | linear " << stat(lexd, true, "max") << " / stiff " << stiff_max(ls, "exact tol " + etol, 0) << "; area "
+     << stat(aexd, true, "max") << " / stiff " << stiff_max(as, "exact tol " + etol, 0) << " | linear "
+     << stat(lexd, true, "ns") << ", area " << stat(aexd, true, "ns") << " |\n"
+     << "| area diffuse: contour closed form (no option) | bake, render, probe | rounding only | double "
+     << stat(acont, true, "max") << " / stiff " << stiff_max(ad, "contour", 0) << "; float " << stat(acont, false, "max")
+     << " | " << stat(acont, true, "ns") << " |\n"
+     << "| disk: `kDiskDefaultTolerance` = " << g(kDiskDefaultTolerance) << " | bake, render, probe | bracket width ≤ "
+     << g(kDiskDefaultTolerance) << " relative, else 64 edges | diffuse " << stat(ddef, true, "max") << " / stiff "
+     << stiff_max(dd, "diffuse, tol " + g(kDiskDefaultTolerance), 0) << "; exact specular " << stat(dsdef, true, "max")
+     << " | diffuse " << stat(ddef, true, "ns") << ", exact specular " << stat(dsdef, true, "ns") << " |\n";
+  if (!e2e.formats.empty()) {
+    const auto& f0 = e2e.formats.front();
+    md << "| `BakeOptions::format` = " << fmt_name << " (`--color-format`) | bake | max abs(stored − exact) ≤ 0.5/65535 = "
+       << fmt(0.5 / 65535) << " of the [0, 1] range; light above 1 clipped (the bake reports how many vertices) | "
+       << "end-to-end asset: max quantization error " << fmt(f0.max_quantization) << ", " << f0.clipped
+       << " vertices clipped (largest light " << fmt(e2e.light_top) << ") | " << f0.bytes << " bytes per vertex; encode "
+       << fmt_ns(f0.seconds * 1e6) << " µs |\n";
+  }
+  md << "| lighting loop in double (`light_scene_vertices`) | bake, render | float rounding of the stored result | "
+        "end-to-end diffuse vs reference: max/top " << fmt(e2e.diffuse_max_rel) << "; own float loop: see the end-to-end "
+        "table | end-to-end lighting " << fmt_ns(e2e.default_seconds * 1e3) << " ms, one thread |\n\n";
 
   md << "## Findings and recommended defaults\n\n"
      << "1. **Linear diffuse.** The closed forms are at rounding level everywhere we looked (ordinary max "
@@ -1309,7 +1588,7 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
      << stat(closed2, true, "ns") << ". The adaptive quadrature's tolerance does not set its error: its graded "
         "initial panels already converge, so tol 1e-4 gives " << stat(q4, true, "max") << " and tol 1e-12 "
      << stat(q12, true, "max") << ", at " << stat(q4, true, "ns") << " and " << stat(q12, true, "ns")
-     << ". **Keep `quadrature_tolerance = 1e-10`**: tightening or loosening it changes neither error nor cost "
+     << ". **Keep `quadrature_tolerance = " << qtol << "`** (the default): tightening or loosening it changes neither error nor cost "
         "materially. A fixed 64-point Gauss-Legendre rule is as good on ordinary cases (" << stat(gl64, true, "max")
      << ", " << stat(gl64, true, "ns") << ") but fails on stiff ones (max " << stiff_max(ld, "fixed GL 64", 0)
      << "), Monte Carlo with 4096 samples stays at " << stat(mc4096, true, "med") << " median (stratified "
@@ -1340,8 +1619,20 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
      << "5. **Float vs double.** The kernels compute float in double internally, so float costs the same and its error "
         "is the final rounding (closed forms " << stat(closed2, false, "max") << ", area contour "
      << stat(acont, false, "max") << "). **Keep the bake in double** (the library's loop is double): float brings no "
-        "speed and the output precision (float / unorm16) is the limit either way.\n\n";
-  (void)lin;
+        "speed and the output precision (float / unorm16) is the limit either way.\n";
+  if (e2e.formats.size() == 3) {
+    const auto& u16 = e2e.formats[0];
+    const auto& u8 = e2e.formats[1];
+    const auto& f32 = e2e.formats[2];
+    md << "6. **Colour format.** On the end-to-end asset the default bake's largest quantization error is "
+       << fmt(u16.max_quantization) << " in unorm16 (" << u16.bytes << " bytes per vertex) against " << fmt(u8.max_quantization)
+       << " in unorm8 (" << u8.bytes << " bytes; visible as banding in smooth gradients) and none in float (" << f32.bytes
+       << " bytes, unclamped); every lighting setting's diffuse error (end-to-end table) is far below the unorm16 step. "
+          "**Keep unorm16**: the light method is never the limit, half the size of float; use `float` when light above 1 "
+          "must survive (" << u16.clipped << " vertices clipped here, largest light " << fmt(e2e.light_top) << ").\n";
+  }
+  if (!e2e.cycles_finding.empty()) md << "7. **Against Blender Cycles.** " << e2e.cycles_finding << "\n";
+  md << "\n";
   return md.str();
 }
 
@@ -1352,10 +1643,15 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
   md << "# Accuracy against run time, and stability on stiff cases\n\n";
   md << "Generated by `scripts/accuracy-report.sh" << (o.quick ? " --quick" : "")
      << "` (program `bench/accuracy_report.cpp`); every number below comes from that one run. Machine: " << cpu_name()
-     << ", one thread. Run time of the whole report: " << int(total_s) << " s.\n\n";
+     << ", one thread. Run time of the whole report: " << int(total_s) << " s"
+     << (o.blender_dir.empty() ? std::string(".")
+                               : ", plus the Cycles bakes that `scripts/blender-compare.sh` made for it (Blender is optional: "
+                                 "without it, or with `VLIT_BLENDER=off`, the report says so; `VLIT_BLENDER=reuse` reads "
+                                 "earlier Cycles bakes).")
+     << "\n\n";
   md << (g_total_nonfinite ? "**NaN or Inf appeared in this run: see the NaN/Inf columns.**\n\n"
                            : "No method returned NaN or Inf on any case of this run (ordinary and stiff, double and float).\n\n");
-  md << body_text(o, sections, lin);
+  md << body_text(o, sections, lin, e2e);
   for (const Section* s : sections) {
     write_section(md, o, *s);
     if (s == &lin.specular) md << "### What the peak estimates\n\n" << lin.peak_vs_max << "\n\n";
@@ -1375,10 +1671,10 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
      << "- **Area contour, \"thin 1e-6\"**: 1.9e-5 relative in double, far above rounding; kernel vs reference "
         "not yet determined.\n\n";
   md << "## Not done\n\n"
-     << "- **Blender Cycles comparison**: `blender` 3.4.1 is installable from Debian (124 packages with "
-        "`--no-install-recommends`, 87 MB for blender itself) but a headless `bench/blender_bake.py` bake was not written "
-        "within this report's time budget; the end-to-end figure compares vlit settings with vlit's own reference "
-        "settings only.\n"
+     << "- **Cycles comparison, lights left out**: it covers what Cycles represents exactly (point lights, "
+        "rectangular area lights, linear lights of falloff 2 as point chains). Spots (Cycles 3.4 multiplies its spot "
+        "by cos ψ to the axis; `--calibrate` shows it), other polygons, disks, two-sided lights and falloff ≠ 2 are "
+        "not compared; nor shadows (vlit's bake has none).\n"
      << "- **Disk specular, hardest stiff cases** (P 1e-4 from the rim, radius 1e6 seen off-centre, m = 1e4): the "
         "long-double reference (`bench/accuracy_disk_reference.h`) takes 2-40 s per case there, so only the diffuse is "
         "checked on them.\n"
@@ -1395,15 +1691,33 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
 int main(int argc, char** argv) {
   using namespace vlit::bench;
   Options o;
+  std::string write_lights;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick") o.quick = true;
     else if (a == "--out-dir" && i + 1 < argc) o.out_dir = argv[++i];
     else if (a == "--asset" && i + 1 < argc) o.asset = argv[++i];
+    else if (a == "--blender" && i + 1 < argc) o.blender_dir = argv[++i];
+    else if (a == "--write-blender-lights" && i + 1 < argc) write_lights = argv[++i];
     else {
-      std::fprintf(stderr, "usage: accuracy_report [--quick] --out-dir DIR [--asset FILE]\n");
+      std::fprintf(stderr,
+                   "usage: accuracy_report [--quick] --out-dir DIR [--asset FILE] [--blender CYCLES_DIR]\n"
+                   "       accuracy_report --asset FILE --write-blender-lights LIGHTS.json\n");
       return 2;
     }
+  }
+  if (!write_lights.empty()) {  // the comparison lights for bench/blender_bake.py, then stop
+    try {
+      const vlit::LoadedScene loaded = vlit::load_scene(o.asset, "", false);
+      const std::string text = lights_json(blender_comparison_lights(loaded.scene));
+      std::ofstream f(write_lights);
+      f << text;
+      if (!f) throw std::runtime_error(write_lights + ": cannot write");
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "accuracy_report: %s\n", e.what());
+      return 2;
+    }
+    return 0;
   }
   if (o.out_dir.empty()) {
     std::fprintf(stderr, "accuracy_report: --out-dir is required\n");

@@ -9,6 +9,11 @@
 # Builds in build/report (override with VLIT_REPORT_BUILD_DIR), Release, at most -j2; runs the
 # program on one thread; draws the plots with gnuplot (Debian: apt-get install gnuplot-nox).
 # Exit status 1 if any method returned NaN or Inf.
+#
+# Blender Cycles comparison (full report only, optional): when `blender` is installed,
+# scripts/blender-compare.sh bakes the asset with Cycles first (a few minutes) into
+# $build/blender. VLIT_BLENDER=off skips it (the report then says Blender was not available);
+# VLIT_BLENDER=reuse uses the Cycles data already in $build/blender without baking again.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -24,10 +29,28 @@ cmake --build "$build" --target accuracy_report -j2 >/dev/null
 asset=../shared/assets/gltf/DamagedHelmet/glTF-Binary/DamagedHelmet.glb
 [[ ${#quick[@]} -gt 0 ]] && asset=../shared/assets/gltf/Avocado/glTF/Avocado.gltf
 
+blender_args=()
+if [[ ${#quick[@]} -eq 0 ]]; then
+  case "${VLIT_BLENDER:-run}" in
+    off) ;;
+    reuse) [[ -f "$build/blender/cycles-times.txt" ]] && blender_args=(--blender "$build/blender") ;;
+    *)
+      if command -v blender >/dev/null; then
+        if VLIT_REPORT_BUILD_DIR="$build" scripts/blender-compare.sh "$build/blender"; then
+          blender_args=(--blender "$build/blender")
+        else
+          echo "accuracy-report: the Cycles comparison failed; the report goes on without it" >&2
+        fi
+      else
+        echo "accuracy-report: blender not installed, no Cycles comparison (Debian: apt-get install blender python3-numpy)" >&2
+      fi ;;
+  esac
+fi
+
 out="$build/accuracy-report${quick[0]:+-quick}"
 rm -rf "$out"
 status=0
-OMP_NUM_THREADS=1 "$build/bench/accuracy_report" "${quick[@]}" --out-dir "$out" --asset "$asset" || status=$?
+OMP_NUM_THREADS=1 "$build/bench/accuracy_report" "${quick[@]}" --out-dir "$out" --asset "$asset" "${blender_args[@]}" || status=$?
 if [[ $status -ne 0 && $status -ne 1 ]]; then
   echo "accuracy-report: the program failed (status $status)" >&2
   exit "$status"

@@ -17,7 +17,8 @@
 // exit and one entry, so this equals Sutherland-Hodgman followed by the contour sum. Non-convex
 // lights stay on the scalar kernel (the scene plan checks convexity).
 // Per-light constants (batch_kernel_for in src/shading/batch_kernels.cpp): the centre c (double), the offsets d_i = Q_i - c,
-// the emitting normal, one- or two-sidedness, the vertex count (any N <= kMaxAreaVertices).
+// the emitting normal, one- or two-sidedness, the vertex count (any N <= kAreaBatchMaxVertices, which
+// equals kMaxAreaVertices of area_polygon.h).
 //
 // Small lights: when the light's radius is below kAreaBatchSmallLightRatio |D| (every edge seen
 // under beta < 0.41), the terms are summed in the reference-subtracted form of

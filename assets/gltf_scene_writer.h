@@ -36,6 +36,8 @@ struct MaterialSpec {
   std::string name;
   std::array<double, 3> base_color;
   double roughness, metallic;
+  std::array<double, 3> emissive{0, 0, 0};  // emissiveFactor
+  double emissive_strength = 1;             // KHR_materials_emissive_strength when not 1
 };
 
 class GltfSceneWriter {
@@ -54,6 +56,13 @@ class GltfSceneWriter {
     m.pbrMetallicRoughness.baseColorFactor = {spec.base_color[0], spec.base_color[1], spec.base_color[2], 1};
     m.pbrMetallicRoughness.metallicFactor = spec.metallic;
     m.pbrMetallicRoughness.roughnessFactor = spec.roughness;
+    if (spec.emissive != std::array<double, 3>{0, 0, 0}) m.emissiveFactor = {spec.emissive[0], spec.emissive[1], spec.emissive[2]};
+    if (spec.emissive_strength != 1) {
+      tinygltf::Value::Object strength;
+      strength["emissiveStrength"] = tinygltf::Value(spec.emissive_strength);
+      m.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(strength);
+      uses("KHR_materials_emissive_strength");
+    }
     model_.materials.push_back(m);
     return static_cast<int>(model_.materials.size()) - 1;
   }
@@ -79,6 +88,26 @@ class GltfSceneWriter {
     }
     model_.meshes.push_back(mesh);
     return static_cast<int>(model_.meshes.size()) - 1;
+  }
+
+  // A mesh of one LINES primitive (2 positions per segment), e.g. an emissive tube.
+  int line_mesh(const std::string& name, const std::vector<Vec3d>& positions, int material) {
+    tinygltf::Primitive prim;
+    prim.mode = TINYGLTF_MODE_LINE;
+    prim.attributes["POSITION"] = vec3_accessor(positions, true);
+    prim.material = material;
+    tinygltf::Mesh mesh;
+    mesh.name = name;
+    mesh.primitives.push_back(prim);
+    model_.meshes.push_back(mesh);
+    return static_cast<int>(model_.meshes.size()) - 1;
+  }
+
+  // Adds `name` to extensionsUsed once.
+  void uses(const std::string& name) {
+    for (const auto& e : model_.extensionsUsed)
+      if (e == name) return;
+    model_.extensionsUsed.push_back(name);
   }
 
   void node(const std::string& name, int mesh, Vec3d translation = {}) {

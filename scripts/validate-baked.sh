@@ -12,6 +12,10 @@ trap 'rm -rf "$out"' EXIT
 vlit=build/release/vlit
 $vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/studio.glb" -q
 $vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/studio.gltf" --color-format unorm8 -q
+# Lights stored in the file (EXT_lights_area, VLIT_lights_linear, emissive lines and triangles),
+# with and without specular folded in.
+$vlit bake assets/examples/file-lights.glb -o "$out/file-lights.glb" -q
+$vlit bake assets/examples/file-lights.glb -o "$out/file-lights-specular.gltf" --specular-eye 0,1.6,5.5 --specular exact -q
 shared=../shared/assets/gltf
 if [[ -d $shared ]]; then
   for f in Box/glTF/Box.gltf BoxInterleaved/glTF-Binary/BoxInterleaved.glb SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf \

@@ -34,7 +34,10 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
     result.warnings.push_back(input + ": no lights (pass --lights LIGHTS.json); the bake is black");
 
   LightingRequest request;
-  request.shade.with_specular = false;  // a bake stores the view-independent diffuse light
+  // Without an eye a bake stores the view-independent diffuse light only.
+  request.shade.with_specular = options.specular_eye.has_value();
+  request.shade.specular = options.specular;
+  request.eye = options.specular_eye;
   request.float_batch = options.float_batch;
   request.progress = options.progress;
   request.cancel = options.cancel;
@@ -53,6 +56,10 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   encode.source = input;
   result.report = bake_vertex_colors(model, loaded.scene, light, encode);
   result.seconds.encode = since(t);
+  if (result.report.specular_unrepresentable > 0)
+    result.warnings.push_back(input + ": " + std::to_string(result.report.specular_unrepresentable) +
+                              " vertices have specular light in a channel whose base colour is 0; a multiplier of the "
+                              "base colour cannot show it (left out)");
   if (result.report.replaced_attributes > 0)
     result.warnings.push_back(input + ": " + (options.encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") +
                               " the existing " + options.encode.target + " of " +

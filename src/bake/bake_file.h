@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@ struct BakeFileOptions {
   bool use_file_lights = true;    // keep the asset's KHR_lights_punctual lights
   bool float_batch = true;        // diffuse in the float SIMD batch kernels where they apply (LightingRequest)
   BakeOptions encode;             // target attribute, format, exposure, unlit
+  // Bake specular for this eye (world space), folded into the stored multiplier
+  // (vertex_color_bake.h); no specular without an eye.
+  std::optional<Vec3d> specular_eye;
+  SpecularOptions specular;       // method for linear and area lights (--specular)
   // Polled between chunks of vertices; when it becomes true the bake stops with an error and
   // writes nothing. May be null.
   const std::atomic<bool>* cancel = nullptr;

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "gltf/accessor_reader.h"
+#include "scene/material.h"
 
 namespace vlit {
 namespace {
@@ -74,6 +75,25 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
             for (int ch = 0; ch < 3; ++ch) rgba[v][ch] *= old[v * comps + ch];
             if (comps == 4) rgba[v][3] = old[v * comps + 3];
           }
+      }
+    }
+    // Specular folded into the multiplier of the base colour: + ks x specular / baseColor. In
+    // multiply mode the old colour multiplies the diffuse only, so viewer = old x base x diffuse
+    // + ks x specular holds without dividing by the old colour.
+    const auto& specular = light[i].specular;
+    if (!specular.empty()) {
+      const PhongMaterial phong = phong_from_metallic_roughness(scene.material_of(sp));
+      const double ks[3] = {phong.ks.x, phong.ks.y, phong.ks.z}, albedo[3] = {phong.kd.x, phong.kd.y, phong.kd.z};
+      for (std::size_t v = 0; v < n; ++v) {
+        const double spec[3] = {specular[v].x, specular[v].y, specular[v].z};
+        bool lost = false;
+        for (int ch = 0; ch < 3; ++ch) {
+          const double term = ks[ch] * spec[ch] * options.exposure;
+          if (!(term > 0)) continue;
+          if (albedo[ch] > 0) rgba[v][ch] += term / albedo[ch];
+          else lost = true;
+        }
+        if (lost) ++report.specular_unrepresentable;
       }
     }
 

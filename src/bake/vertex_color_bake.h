@@ -33,6 +33,9 @@ struct BakeOptions {
 
 struct BakeReport {
   std::size_t vertices = 0;
+  // Vertices with specular light in a channel whose base colour is 0, where a multiplier of the
+  // base colour cannot show it (the specular of that channel is left out).
+  std::size_t specular_unrepresentable = 0;
   std::size_t clipped_vertices = 0;     // a channel above 1 clamped (unorm formats only)
   double max_quantization_error = 0;    // largest |stored - exact| over unclipped channels
   std::size_t replaced_attributes = 0;  // primitives whose existing target attribute was replaced or multiplied
@@ -41,6 +44,11 @@ struct BakeReport {
 
 // `light` holds one VertexLight per scene primitive (light_scene_vertices). The scene must have
 // been built from this model (gltf/gltf_scene.h).
+// When `light` carries specular light (a bake with --specular-eye), it is folded into the stored
+// multiplier so that viewer = stored x baseColor shows kd x diffuse + ks x specular:
+//   stored = diffuse [x old colour, multiply mode] + ks x specular / baseColor, per channel,
+// with ks from the material mapping (docs/conventions.md); exact only where the texture is white
+// and the encoding does not clamp (docs/gltf-output.md "Specular in a multiplier").
 BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const std::vector<VertexLight>& light,
                               const BakeOptions& options);
 

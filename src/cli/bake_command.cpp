@@ -2,6 +2,7 @@
 // One input and a file name: bake one file. Several inputs, a directory or a glob pattern, or an
 // existing directory as OUT: a batch into the directory OUT, keeping going when a file fails.
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -11,6 +12,7 @@
 
 #include "bake/bake_file.h"
 #include "cli/commands.h"
+#include "cli/specular_option.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
@@ -30,12 +32,15 @@ struct BakeArgs {
   std::string color_format = "unorm16";
   std::string mode = "replace";
   std::string target = "COLOR_0";
+  std::string specular_eye;        // "x,y,z" or empty
+  std::string specular = "peak";
   double exposure = 1;
   bool no_unlit = false;
   bool no_file_lights = false;
   bool quiet = false;
   bool explain = false;
   std::size_t max_vertices = SceneLimits{}.max_vertices;
+  std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
 };
 
 // An input argument as a list of glTF files: a file as is, a directory searched recursively, a
@@ -63,8 +68,30 @@ std::vector<std::pair<std::string, fs::path>> expand_input(const std::string& ar
   return files;
 }
 
+// "x,y,z": three finite numbers separated by commas.
+Vec3d parse_eye(const std::string& text) {
+  double c[3];
+  std::size_t at = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t end = i < 2 ? text.find(',', at) : text.size();
+    if (end == std::string::npos) throw InputError("--specular-eye", "expected x,y,z, got \"" + text + "\"");
+    const std::string part = text.substr(at, end - at);
+    try {
+      std::size_t used = 0;
+      c[i] = std::stod(part, &used);
+      if (used != part.size() || !std::isfinite(c[i])) throw std::invalid_argument(part);
+    } catch (const std::exception&) {
+      throw InputError("--specular-eye", "expected x,y,z with three finite numbers, got \"" + text + "\"");
+    }
+    at = end + 1;
+  }
+  return {c[0], c[1], c[2]};
+}
+
 BakeFileOptions file_options(const BakeArgs& args) {
   BakeFileOptions o;
+  if (!args.specular_eye.empty()) o.specular_eye = parse_eye(args.specular_eye);
+  o.specular = parse_specular(args.specular);
   o.lights_path = args.lights;
   o.use_file_lights = !args.no_file_lights;
   o.encode.exposure = args.exposure;
@@ -93,7 +120,7 @@ void print_summary(const std::string& output, const BakeFileResult& r, const std
 }
 
 int run_bake(const BakeArgs& args) {
-  set_default_scene_limits({args.max_vertices});
+  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   std::vector<std::pair<std::string, fs::path>> files;
@@ -132,29 +159,32 @@ int run_bake(const BakeArgs& args) {
   if (!fs::exists(args.output, ec)) fs::create_directories(args.output, ec);
   if (!fs::is_directory(args.output, ec)) throw InputError(args.output, "a batch needs -o to be a directory");
   std::vector<std::string> failures;
-  Progress progress("baking", !args.quiet);
+  BatchProgress progress(files.size(), !args.quiet);
+  options.progress = [&](std::size_t done_vertices, std::size_t total) { progress.update_file(done_vertices, total); };
   std::size_t done = 0;
   for (const auto& [input, relative] : files) {
     if (g_interrupted.load()) break;
     const fs::path output = fs::path(args.output) / relative;
+    progress.start_file(relative.string());
     try {
       fs::create_directories(output.parent_path(), ec);
       const BakeFileResult r = bake_file(input, output.string(), options);
-      progress.finish();
+      if (!r.warnings.empty() || args.explain) progress.clear();
       for (const auto& w : r.warnings) print_warning(w);
       if (args.explain) print_explain(input, r);
     } catch (const InputError& e) {
-      progress.finish();
+      progress.clear();
       print_error(e.what());
       failures.push_back(input);
     } catch (const std::exception& e) {
-      progress.finish();
+      progress.clear();
       print_error(input + ": " + e.what());
       failures.push_back(input);
     }
-    progress.update(++done, files.size());
+    ++done;
+    progress.finish_file();
   }
-  progress.finish();
+  progress.clear();
   const std::size_t skipped = files.size() - done;
   if (!args.quiet || !failures.empty() || skipped > 0)
     std::fprintf(stderr, "%zu of %zu files baked into %s; %zu failed%s\n", done - failures.size(), files.size(),
@@ -185,14 +215,22 @@ Runner add_bake_command(CLI::App& app) {
       ->check(CLI::IsMember({"unorm16", "unorm8", "float"}));
   cmd->add_option("--exposure", args->exposure, "Multiplier applied to the light before encoding (default 1)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--specular-eye", args->specular_eye,
+                  "Also bake specular light seen from this world-space eye, x,y,z (off by default); it is folded into "
+                  "the multiplier of the base color (docs/gltf-output.md)");
+  cmd->add_option("--specular", args->specular,
+                  "Specular method of linear and area lights with --specular-eye: peak (default), neighborhood:K, exact");
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
-  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
+  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual, EXT_lights_area, VLIT_lights_linear, emissive geometry)");
   cmd->add_flag("--explain", args->explain,
                 "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
   cmd->add_option("--max-vertices", args->max_vertices,
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
+                  "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
+      ->check(CLI::NonNegativeNumber);
   cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.\n"
               "Outputs are written atomically; a failed or interrupted file leaves no output. A batch keeps going\n"
               "when a file fails and exits 1 with a summary.");

@@ -26,8 +26,11 @@ struct RenderArgs {
   bool quiet = false;
   bool explain = false;
   std::string specular = "peak";
+  std::string view = "shaded";
+  double wire_width = raster::WireframeOptions{}.width;
   bool no_file_lights = false;
   std::size_t max_vertices = SceneLimits{}.max_vertices;
+  std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
 };
 
@@ -48,6 +51,29 @@ raster::Camera to_raster_camera(const SceneCamera& c) {
   return out;
 }
 
+// The normals debug view's colour of a world-space normal: 0.5 n + 0.5 per channel, written to the
+// PNG as is (no sRGB OETF): +X = (255, 128, 128), -X = (0, 128, 128), +Y = (128, 255, 128)...
+Vec3f normal_view_color(const Vec3d& n) { return static_cast<Vec3f>(n * 0.5 + Vec3d{0.5, 0.5, 0.5}); }
+
+// Meshes coloured by their interpolated world normals (no lighting). Takes the scene's triangle
+// lists (moved, not copied).
+std::vector<raster::DrawMesh> normal_view_meshes(Scene& scene) {
+  std::vector<raster::DrawMesh> meshes;
+  for (ScenePrimitive& prim : scene.primitives) {
+    raster::DrawMesh mesh;
+    mesh.double_sided = scene.material_of(prim).double_sided;
+    mesh.indices = std::move(prim.triangles);
+    mesh.positions.reserve(prim.positions.size());
+    mesh.colors.reserve(prim.positions.size());
+    for (std::size_t v = 0; v < prim.positions.size(); ++v) {
+      mesh.positions.push_back(static_cast<Vec3f>(prim.positions[v]));
+      mesh.colors.push_back(v < prim.normals.size() ? normal_view_color(prim.normals[v]) : Vec3f{0.5f, 0.5f, 0.5f});
+    }
+    meshes.push_back(std::move(mesh));
+  }
+  return meshes;
+}
+
 int run_render(const RenderArgs& args) {
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -57,12 +83,14 @@ int run_render(const RenderArgs& args) {
     throw InputError(args.output, std::to_string(args.width) + " x " + std::to_string(args.height) +
                                       " pixels exceed the limit of " + std::to_string(args.max_pixels) +
                                       " (raise it with --max-pixels)");
-  set_default_scene_limits({args.max_vertices});
+  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
   LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
   for (const auto& w : loaded.warnings) print_warning(w);
+  loaded.gltf.reset();  // the glTF document (with its buffers) is for bake's output, not needed here
   const Scene& scene = loaded.scene;
   const double load_seconds = since(t);
-  if (scene.lights.empty()) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
+  const bool normals_view = args.view == "normals";
+  if (scene.lights.empty() && !normals_view) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
 
   raster::RenderOptions options;
   options.width = args.width;
@@ -71,6 +99,8 @@ int run_render(const RenderArgs& args) {
   options.background = {static_cast<float>(args.background[0]), static_cast<float>(args.background[1]),
                         static_cast<float>(args.background[2])};
   options.cull_back_faces = args.cull_back_faces;
+  options.wireframe.enabled = args.view == "wireframe";
+  options.wireframe.width = args.wire_width;
   if (const std::string problem = raster::validate_render_options(options); !problem.empty())
     throw InputError(args.output, problem);
 
@@ -84,46 +114,59 @@ int run_render(const RenderArgs& args) {
     camera = raster::frame_bounds(lo, hi, aspect);
   }
 
-  Progress progress("lighting " + args.input, !args.quiet);
-  LightingRequest request;
-  request.eye = Vec3d{camera.world_from_camera.m[0][3], camera.world_from_camera.m[1][3], camera.world_from_camera.m[2][3]};
-  request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
-  request.shade.specular = specular;
-  t = Clock::now();
-  const ScenePlan plan = plan_lighting(scene, request);
-  const double plan_seconds = since(t);
-  t = Clock::now();
-  const auto light = light_scene_vertices(scene, plan, request);
-  const double light_seconds = since(t);
-  progress.finish();
-  t = Clock::now();
-
+  double plan_seconds = 0, light_seconds = 0;
+  std::optional<ScenePlan> plan;
   std::vector<raster::DrawMesh> meshes;
-  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
-    const ScenePrimitive& prim = scene.primitives[i];
-    const Material& material = scene.material_of(prim);
-    const PhongMaterial phong = phong_from_metallic_roughness(material);
-    raster::DrawMesh mesh;
-    mesh.double_sided = material.double_sided;
-    mesh.indices = prim.triangles;
-    mesh.positions.reserve(prim.positions.size());
-    mesh.colors.reserve(prim.positions.size());
-    for (std::size_t v = 0; v < prim.positions.size(); ++v) {
-      mesh.positions.push_back(static_cast<Vec3f>(prim.positions[v]));
-      Vec3d color = hadamard(phong.kd, static_cast<Vec3d>(light[i].diffuse[v]));
-      if (!light[i].specular.empty()) color += hadamard(phong.ks, static_cast<Vec3d>(light[i].specular[v]));
-      mesh.colors.push_back(static_cast<Vec3f>(color));
+  if (normals_view) {
+    meshes = normal_view_meshes(loaded.scene);
+  } else {
+    Progress progress("lighting " + args.input, !args.quiet);
+    LightingRequest request;
+    request.eye = Vec3d{camera.world_from_camera.m[0][3], camera.world_from_camera.m[1][3], camera.world_from_camera.m[2][3]};
+    request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+    request.shade.specular = specular;
+    t = Clock::now();
+    plan = plan_lighting(scene, request);
+    plan_seconds = since(t);
+    t = Clock::now();
+    const auto light = light_scene_vertices(scene, *plan, request);
+    light_seconds = since(t);
+    progress.finish();
+    for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+      const ScenePrimitive& prim = scene.primitives[i];
+      const Material& material = scene.material_of(prim);
+      const PhongMaterial phong = phong_from_metallic_roughness(material);
+      raster::DrawMesh mesh;
+      mesh.double_sided = material.double_sided;
+      mesh.indices = std::move(loaded.scene.primitives[i].triangles);  // not needed by the scene any more
+      mesh.positions.reserve(prim.positions.size());
+      mesh.colors.reserve(prim.positions.size());
+      for (std::size_t v = 0; v < prim.positions.size(); ++v) {
+        mesh.positions.push_back(static_cast<Vec3f>(prim.positions[v]));
+        Vec3d color = hadamard(phong.kd, static_cast<Vec3d>(light[i].diffuse[v]));
+        if (!light[i].specular.empty()) color += hadamard(phong.ks, static_cast<Vec3d>(light[i].specular[v]));
+        mesh.colors.push_back(static_cast<Vec3f>(color));
+      }
+      meshes.push_back(std::move(mesh));
     }
-    meshes.push_back(std::move(mesh));
   }
+  // The scene's geometry is not needed any more: free it before rasterizing, where a large render
+  // peaks (docs/rasterizer.md, memory).
+  const std::string plan_text = args.explain && plan ? describe(*plan, scene) : std::string("plan: none (normals view)\n");
+  for (ScenePrimitive& prim : loaded.scene.primitives) {
+    std::vector<Vec3d>().swap(prim.positions);
+    std::vector<Vec3d>().swap(prim.normals);
+  }
+  t = Clock::now();
   const raster::Image image = raster::render(meshes, camera, options);
   const double raster_seconds = since(t);
   t = Clock::now();
-  const std::vector<uint8_t> rgb8 = raster::encode_srgb8(image, static_cast<float>(args.exposure));
+  const std::vector<uint8_t> rgb8 =
+      normals_view ? raster::encode_unorm8(image) : raster::encode_srgb8(image, static_cast<float>(args.exposure));
   std::string error;
   if (!raster::write_png(args.output, image.width, image.height, rgb8, &error)) throw InputError(args.output, error);
   if (args.explain) {
-    std::printf("%s\n%s", args.input.c_str(), describe(plan, scene).c_str());
+    std::printf("%s\n%s", args.input.c_str(), plan_text.c_str());
     std::printf("time: load %.3f s, plan %.3f s, light %.3f s, rasterize %.3f s, encode+write %.3f s\n", load_seconds,
                 plan_seconds, light_seconds, raster_seconds, since(t));
   }
@@ -149,15 +192,25 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--exposure", args->exposure, "Multiplier applied before sRGB encoding (default 1)")->check(CLI::PositiveNumber);
   cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
-  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual)");
+  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual, EXT_lights_area, VLIT_lights_linear, emissive geometry)");
   cmd->add_option("--specular", args->specular,
                   "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
+  cmd->add_option("--view", args->view,
+                  "shaded (default); wireframe: triangle edges over the shading; normals: world normals as "
+                  "colours, 0.5 n + 0.5, unlit, written without sRGB encoding or exposure (docs/rasterizer.md)")
+      ->check(CLI::IsMember({"shaded", "wireframe", "normals"}));
+  cmd->add_option("--wire-width", args->wire_width,
+                  "Wireframe view: line width in pixels on each side of a shared edge (default 0.5)")
+      ->check(CLI::Range(0.01, 64.0));
   cmd->add_flag("--explain", args->explain,
                 "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
   cmd->add_option("--max-vertices", args->max_vertices,
                   "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
+                  "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-pixels", args->max_pixels, "Refuse an image larger than this many pixels (default 67108864)")
       ->check(CLI::PositiveNumber);
   cmd->footer("The camera is the glTF's first camera if it has one, otherwise a 3/4 view framing the whole scene.");

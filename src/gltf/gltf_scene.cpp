@@ -8,6 +8,10 @@
 #include "core/affine.h"
 #include "core/input_error.h"
 #include "gltf/accessor_reader.h"
+#include "gltf/emissive_lights.h"
+#include "gltf/extension_object.h"
+#include "gltf/gltf_area_lights.h"
+#include "gltf/gltf_linear_lights.h"
 #include "mesh/vertex_normals.h"
 
 namespace vlit {
@@ -58,17 +62,111 @@ std::string limit_message(const char* what, std::size_t limit) {
          " (the limit that protects the machine; raise it with --max-vertices)";
 }
 
+// The brightest lights of the file's emissive geometry, at most `limit` at any time, so an asset
+// with a million emissive triangles never holds a million lights: a heap whose front is the
+// weakest kept light (by luminous flux; on equal flux the later one in the file is weaker).
+class EmissiveLights {
+ public:
+  explicit EmissiveLights(std::size_t limit) : limit_(limit) {}
+
+  void add(LightSource light) {
+    Ranked r{luminous_flux(light), seen_++, std::move(light)};
+    if (kept_.size() < limit_) {
+      kept_.push_back(std::move(r));
+      std::push_heap(kept_.begin(), kept_.end(), stronger);
+    } else if (!kept_.empty() && stronger(r, kept_.front())) {
+      std::pop_heap(kept_.begin(), kept_.end(), stronger);
+      kept_.back() = std::move(r);
+      std::push_heap(kept_.begin(), kept_.end(), stronger);
+    }
+  }
+  std::size_t seen() const { return seen_; }
+  // File order when nothing was dropped, brightest first otherwise.
+  std::vector<LightSource> take() {
+    if (seen_ > limit_) std::sort(kept_.begin(), kept_.end(), stronger);
+    else std::sort(kept_.begin(), kept_.end(), [](const Ranked& a, const Ranked& b) { return a.order < b.order; });
+    std::vector<LightSource> out;
+    for (auto& r : kept_) out.push_back(std::move(r.light));
+    return out;
+  }
+
+ private:
+  struct Ranked {
+    double flux;
+    std::size_t order;
+    LightSource light;
+  };
+  static bool stronger(const Ranked& a, const Ranked& b) {
+    return a.flux > b.flux || (a.flux == b.flux && a.order < b.order);
+  }
+  std::size_t limit_, seen_ = 0;
+  std::vector<Ranked> kept_;
+};
+
+// What build_scene collects besides the scene: the lights of emissive geometry (ranked and limited)
+// and the state of the limits.
+struct BuildState {
+  explicit BuildState(const SceneLimits& limits) : emissive_lights(limits.max_emissive_lights) {}
+  bool file_lights = true;
+  std::size_t vertices_so_far = 0, corners_so_far = 0;
+  EmissiveLights emissive_lights;
+  PlanarMergeStats merge;  // summed over primitives, for the message about merging
+};
+
+bool is_line_mode(int mode) {
+  return mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_LOOP || mode == TINYGLTF_MODE_LINE_STRIP;
+}
+
+const Material* material_at(const Scene& scene, int index) {
+  return index >= 0 && static_cast<std::size_t>(index) < scene.materials.size() ? &scene.materials[index] : nullptr;
+}
+
+// An emissive LINES / LINE_STRIP / LINE_LOOP primitive: one linear light per segment.
+void read_emissive_lines(const GltfFile& file, const tinygltf::Primitive& prim, int mode, const std::string& where,
+                         const Affine& world, const Material& material, const SceneLimits& limits, BuildState& state) {
+  const tinygltf::Model& model = file.model;
+  const auto pos_it = prim.attributes.find("POSITION");
+  if (pos_it == prim.attributes.end()) return;
+  if (pos_it->second < 0 || static_cast<std::size_t>(pos_it->second) >= model.accessors.size() ||
+      model.accessors[pos_it->second].type != TINYGLTF_TYPE_VEC3)
+    throw InputError(file.path, "POSITION must be a VEC3 accessor", where);
+  const std::size_t count = model.accessors[pos_it->second].count;
+  if (count > limits.max_vertices - std::min(state.vertices_so_far, limits.max_vertices))
+    throw InputError(file.path, limit_message("vertices", limits.max_vertices), where);
+  state.vertices_so_far += count;
+  const std::vector<double> pos = read_accessor_as_doubles(model, pos_it->second, file.path);
+  const std::size_t vertex_count = pos.size() / 3;
+  std::vector<std::uint32_t> draw_order;
+  if (prim.indices >= 0) {
+    draw_order = read_indices(model, prim.indices, vertex_count, file.path);
+  } else {
+    draw_order.resize(vertex_count);
+    for (std::size_t i = 0; i < vertex_count; ++i) draw_order[i] = static_cast<std::uint32_t>(i);
+  }
+  std::vector<Vec3d> positions(vertex_count);
+  for (std::size_t i = 0; i < vertex_count; ++i) positions[i] = world.apply_point(vec3_at(pos, i));
+  auto lights = emissive_line_lights(positions, line_segments(mode, draw_order), material, file.path + ": " + where);
+  for (auto& l : lights)
+    if (is_finite(l.from) && is_finite(l.to)) state.emissive_lights.add(std::move(l));
+}
+
 void read_primitive(const GltfFile& file, int node_index, int mesh_index, int prim_index, const Affine& world,
-                    Scene& scene, std::vector<std::string>& warnings, const SceneLimits& limits,
-                    std::size_t& vertices_so_far, std::size_t& corners_so_far) {
+                    Scene& scene, std::vector<std::string>& warnings, const SceneLimits& limits, BuildState& state) {
   const tinygltf::Model& model = file.model;
   const tinygltf::Primitive& prim = model.meshes[mesh_index].primitives[prim_index];
   const std::string where = "meshes[" + std::to_string(mesh_index) + "].primitives[" + std::to_string(prim_index) + "]";
   const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
+  const Material* material = material_at(scene, prim.material);
+  if (is_line_mode(mode) && state.file_lights && material && emits_light(*material)) {
+    read_emissive_lines(file, prim, mode, where, world, *material, limits, state);
+    return;
+  }
   if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
     warnings.push_back(file.path + ": " + where + ": skipped (mode " + std::to_string(mode) + " is not triangles)");
     return;
   }
+  std::size_t& vertices_so_far = state.vertices_so_far;
+  std::size_t& corners_so_far = state.corners_so_far;
   const auto pos_it = prim.attributes.find("POSITION");
   if (pos_it == prim.attributes.end()) {
     warnings.push_back(file.path + ": " + where + ": skipped (no POSITION attribute)");
@@ -166,11 +264,35 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
   // model gives zero for a zero normal, so it receives no light, as the warning says.
   for (std::size_t i = 0; i < bad.size(); ++i)
     if (bad[i]) out.normals[i] = {};
+  if (state.file_lights && material && emits_light(*material)) {
+    PlanarMergeStats merge;
+    auto lights = emissive_triangle_lights(out, scene.primitives.size(), *material,
+                                           file.path + ": nodes[" + std::to_string(node_index) + "] " + where, &merge);
+    state.merge.triangles += merge.triangles;
+    state.merge.regions += merge.regions;
+    state.merge.merged_regions += merge.merged_regions;
+    for (auto& l : lights) state.emissive_lights.add(std::move(l));
+  }
   scene.primitives.push_back(std::move(out));
 }
 
-Material read_material(const tinygltf::Material& m) {
+Material read_material(const GltfFile& file, std::size_t index, std::vector<std::string>& warnings) {
+  const tinygltf::Material& m = file.model.materials[index];
+  const std::string where = "materials[" + std::to_string(index) + "]";
   Material out;
+  if (m.emissiveFactor.size() == 3) out.emissive_factor = {m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]};
+  if (!is_finite(out.emissive_factor) || out.emissive_factor.x < 0 || out.emissive_factor.y < 0 || out.emissive_factor.z < 0)
+    throw InputError(file.path, "emissiveFactor must be finite and >= 0", where);
+  if (const auto ext = m.extensions.find("KHR_materials_emissive_strength"); ext != m.extensions.end()) {
+    ExtensionObject strength(ext->second, file.path, where + ".extensions.KHR_materials_emissive_strength");
+    out.emissive_strength = strength.number("emissiveStrength", 1.0);
+    if (out.emissive_strength < 0) strength.fail("emissiveStrength", "must be >= 0");
+  }
+  out.emissive_texture = m.emissiveTexture.index >= 0;
+  const Vec3d e = out.emission();
+  if (out.emissive_texture && (e.x > 0 || e.y > 0 || e.z > 0))
+    warnings.push_back(file.path + ": " + where + ": emission comes from a texture, which vlit does not sample; "
+                       "the material is not used as a light");
   const auto& f = m.pbrMetallicRoughness.baseColorFactor;
   if (f.size() >= 3) out.base_color = {f[0], f[1], f[2]};
   out.metallic = m.pbrMetallicRoughness.metallicFactor;
@@ -275,10 +397,21 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
 }
 
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits) {
+  return build_scene(file, warnings, limits, true);
+}
+
+Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits, bool file_lights) {
   const tinygltf::Model& model = file.model;
-  std::size_t vertices_so_far = 0, corners_so_far = 0;
+  BuildState state(limits);
+  state.file_lights = file_lights;
   Scene scene;
-  for (const auto& m : model.materials) scene.materials.push_back(read_material(m));
+  for (std::size_t m = 0; m < model.materials.size(); ++m) scene.materials.push_back(read_material(file, m, warnings));
+  std::vector<AreaLightDefinition> area_lights;
+  std::vector<LinearLightDefinition> linear_lights;
+  if (file_lights) {
+    area_lights = read_area_light_definitions(file, warnings);
+    linear_lights = read_linear_light_definitions(file);
+  }
 
   // Roots: the default scene's nodes; without scenes, every node that is nobody's child.
   std::vector<int> roots;
@@ -316,12 +449,15 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
       if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
         throw InputError(file.path, "mesh " + std::to_string(node.mesh) + " does not exist", "nodes[" + std::to_string(index) + "]");
       for (std::size_t p = 0; p < model.meshes[node.mesh].primitives.size(); ++p)
-        read_primitive(file, index, node.mesh, static_cast<int>(p), world, scene, warnings, limits, vertices_so_far,
-                       corners_so_far);
+        read_primitive(file, index, node.mesh, static_cast<int>(p), world, scene, warnings, limits, state);
     }
     if (node.camera >= 0 && static_cast<std::size_t>(node.camera) < model.cameras.size() && !scene.camera)
       scene.camera = read_camera(model.cameras[node.camera], world);
-    if (const auto ext = node.extensions.find("KHR_lights_punctual"); ext != node.extensions.end() &&
+    if (file_lights && node.extensions.count(kExtLightsArea))
+      if (auto light = place_area_light(file, area_lights, index, world, warnings)) scene.lights.push_back(*light);
+    if (file_lights && node.extensions.count(kVlitLightsLinear))
+      if (auto light = place_linear_light(file, linear_lights, index, world, warnings)) scene.lights.push_back(*light);
+    if (const auto ext = node.extensions.find("KHR_lights_punctual"); file_lights && ext != node.extensions.end() &&
                                                                    ext->second.Has("light")) {
       const tinygltf::Value& light_ref = ext->second.Get("light");
       if (light_ref.IsInt())
@@ -336,6 +472,17 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
       warnings.push_back(file.path + ": material " + std::to_string(p.material) + " does not exist; using the default material");
       p.material = -1;
     }
+
+  // Emissive geometry: the brightest max_emissive_lights lights, by luminous flux.
+  if (state.emissive_lights.seen() > limits.max_emissive_lights)
+    warnings.push_back(file.path + ": emissive geometry makes " + std::to_string(state.emissive_lights.seen()) +
+                       " lights; kept the " + std::to_string(limits.max_emissive_lights) +
+                       " brightest (the limit that keeps a bake fast; raise it with --max-emissive-lights)");
+  if (state.merge.regions > state.merge.merged_regions)
+    warnings.push_back(file.path + ": " + std::to_string(state.merge.regions - state.merge.merged_regions) +
+                       " coplanar emissive regions have holes, pinched or long boundaries; their triangles are lit "
+                       "as separate area lights (exact, slower)");
+  for (auto& l : state.emissive_lights.take()) scene.lights.push_back(std::move(l));
   return scene;
 }
 

@@ -16,6 +16,10 @@ namespace vlit {
 // counts (the bake lights each instance separately).
 struct SceneLimits {
   std::size_t max_vertices = 50'000'000;  // all primitives of all node instances
+  // Lights made from emissive geometry (one per merged polygon, triangle or line segment): beyond
+  // this, the brightest are kept with a warning, so an asset with thousands of emissive
+  // triangles does not make a bake thousands of times slower.
+  std::size_t max_emissive_lights = 64;
   // Triangle corners (3 per triangle) may be at most kCornersPerVertex x max_vertices.
   static constexpr std::size_t kCornersPerVertex = 6;
 };
@@ -25,10 +29,15 @@ struct SceneLimits {
 void set_default_scene_limits(const SceneLimits& limits);
 SceneLimits default_scene_limits();
 
-// Throws InputError for a malformed asset (bad accessors, indices out of range, node cycles) or one
-// beyond `limits`. Primitives that cannot be lit (points, lines, missing POSITION) are skipped with
-// a warning appended to `warnings`.
+// Throws InputError for a malformed asset (bad accessors, indices out of range, node cycles,
+// malformed light extensions) or one beyond `limits`. Primitives that cannot be lit (points,
+// non-emissive lines, missing POSITION) are skipped with a warning appended to `warnings`.
+// Lights of the file: KHR_lights_punctual, EXT_lights_area (gltf_area_lights.h),
+// VLIT_lights_linear (gltf_linear_lights.h) and emissive geometry (emissive_lights.h).
+// file_lights = false ignores every light of the file (KHR_lights_punctual, EXT_lights_area,
+// VLIT_lights_linear, emissive geometry) without reading it; emissive lines are then skipped.
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits);
+Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits, bool file_lights);
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings);
 
 // glTF primitive modes TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN as a triangle list (3 indices per

@@ -36,9 +36,11 @@ std::pair<Vec3d, Vec3d> emitter_plane(const LightSource& l) {
   return {normalize(newell), l.polygon[0]};
 }
 
-// Why the light cannot reach the primitive's box, or empty if it may.
-std::string cannot_reach(const LightSource& l, const Bounds& b) {
+// Why the light cannot reach primitive `p` (bounding box b), or empty if it may.
+std::string cannot_reach(const LightSource& l, std::size_t p, const Bounds& b) {
   if (b.empty()) return "no vertices";
+  if (l.emitting_primitive >= 0 && static_cast<std::size_t>(l.emitting_primitive) == p)
+    return "the light is this primitive's own emission";
   if ((l.type == LightType::kArea || l.type == LightType::kDisk) && !l.two_sided) {
     const auto [n, q] = emitter_plane(l);
     bool any_in_front = false;
@@ -121,7 +123,7 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
     const Bounds b = bounds_of(scene.primitives[p]);
     for (std::size_t i = 0; i < kept.size(); ++i) {
       ++plan.pairs_total;
-      const std::string why = cannot_reach(*kept[i], b);
+      const std::string why = cannot_reach(*kept[i], p, b);
       if (why.empty()) {
         plan.lights_of_primitive[p].push_back(static_cast<int>(i));
         ++plan.pairs_kept;

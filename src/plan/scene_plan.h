@@ -3,7 +3,8 @@
 // - lights that cannot contribute anywhere (zero intensity or colour) are dropped;
 // - light x primitive pairs that cannot contribute are skipped: a one-sided area or disk light
 //   whose emitting side does not reach the primitive's bounding box, a spot light whose cone
-//   misses the primitive's bounding sphere, a light whose glTF range ends before the box;
+//   misses the primitive's bounding sphere, a light whose glTF range ends before the box, a light
+//   made from a primitive's own emissive triangles and that primitive (it does not light itself);
 // - specular work is planned only when an eye is given and asked for;
 // - every per-light constant is computed once (PreparedLight, and BatchLight for the lights
 //   whose diffuse-only work runs in a float SIMD batch kernel).

@@ -24,10 +24,11 @@ ClipPlanes make_clip_planes(int grid_width, int grid_height, bool has_far) {
 namespace {
 
 // The point where the edge inside -> outside crosses the plane, computed from the inside end.
+// original_edge_to_next is for the caller to set (it depends on the direction of travel).
 ClipVertex intersect(const ClipVertex& inside, double d_in, const ClipVertex& outside, double d_out) {
   const double t = d_in / (d_in - d_out);  // d_in >= 0 > d_out, so t in [0, 1)
   return {inside.position + (outside.position - inside.position) * t,
-          inside.color + (outside.color - inside.color) * t};
+          inside.color + (outside.color - inside.color) * t, false};
 }
 
 }  // namespace
@@ -58,8 +59,12 @@ int clip_triangle(const ClipVertex& a, const ClipVertex& b, const ClipVertex& c,
       const double d_cur = dot(plane, cur.position), d_next = dot(plane, next.position);
       if (m + 2 > kMaxClipVertices) return 0;
       if (d_cur >= 0) scratch[m++] = cur;
-      if ((d_cur >= 0) != (d_next >= 0))
-        scratch[m++] = d_cur >= 0 ? intersect(cur, d_cur, next, d_next) : intersect(next, d_next, cur, d_cur);
+      if ((d_cur >= 0) != (d_next >= 0)) {
+        // Leaving: the edge from the cut point runs along the plane. Entering: it continues the
+        // edge cur -> next.
+        scratch[m] = d_cur >= 0 ? intersect(cur, d_cur, next, d_next) : intersect(next, d_next, cur, d_cur);
+        scratch[m++].original_edge_to_next = d_cur < 0 && cur.original_edge_to_next;
+      }
     }
     for (int j = 0; j < m; ++j) out[j] = scratch[j];
     n = m;

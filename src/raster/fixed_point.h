@@ -31,9 +31,13 @@ constexpr int64_t kMaxFixed = int64_t{1} << 28;                  // kGuardBandPi
 
 // Nearest fixed-point value of a pixel coordinate, clamped to the budget (the clamp only ever
 // moves clipped vertices by their rounding error). Precondition: pixel is finite.
+// Rounds half away from zero, exactly like std::llround (inline: it is called three times per
+// triangle); x - trunc(x) is exact for |x| <= 2^28.
 inline int64_t snap_to_fixed(double pixel) {
   const double scaled = std::clamp(pixel * double(kSubpixelOne), -double(kMaxFixed), double(kMaxFixed));
-  return std::llround(scaled);
+  const int64_t truncated = int64_t(scaled);
+  const double fraction = scaled - double(truncated);
+  return truncated + (fraction >= 0.5 ? 1 : 0) - (fraction <= -0.5 ? 1 : 0);
 }
 
 // Fixed-point coordinate of the centre of pixel (or row) `index`.

@@ -1,6 +1,7 @@
 // sRGB encoding; see srgb.h.
 #include "raster/srgb.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace vlit::raster {
@@ -21,6 +22,15 @@ std::vector<uint8_t> encode_srgb8(const Image& image, float exposure) {
   const long long n = (long long)image.rgb.size();
 #pragma omp parallel for schedule(static)
   for (long long i = 0; i < n; ++i) out[i] = encode_srgb8(image.rgb[i], exposure);
+  return out;
+}
+
+std::vector<uint8_t> encode_unorm8(const Image& image) {
+  std::vector<uint8_t> out(image.rgb.size());
+  for (size_t i = 0; i < out.size(); ++i) {
+    const float v = image.rgb[i];
+    out[i] = v > 0 ? uint8_t(std::lround(double(std::min(v, 1.0f)) * 255.0)) : 0;
+  }
   return out;
 }
 

@@ -20,4 +20,8 @@ uint8_t encode_srgb8(float linear, float exposure);
 // (1 = unchanged), applied here and only here.
 std::vector<uint8_t> encode_srgb8(const Image& image, float exposure);
 
+// For images whose values are already display values, not light (the normals debug view):
+// round(255 * clamp(v, 0, 1)) per channel, no OETF, no exposure. NaN maps to 0.
+std::vector<uint8_t> encode_unorm8(const Image& image);
+
 }  // namespace vlit::raster

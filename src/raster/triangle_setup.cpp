@@ -35,14 +35,18 @@ Gradient plane(double a0, double a1, double a2, double x1, double y1, double x2,
 
 std::optional<SetupTriangle> setup_triangle(const ScreenVertex& a, const ScreenVertex& b,
                                             const ScreenVertex& c, bool cull_back_face,
-                                            int grid_width, int grid_height) {
+                                            int grid_width, int grid_height, uint8_t original_edges) {
   // Twice the signed area with y down: negative = counter-clockwise on screen with y up = front.
   const int64_t area2 = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
   if (area2 == 0) return std::nullopt;
   if (cull_back_face && area2 > 0) return std::nullopt;
 
-  std::array<const ScreenVertex*, 3> v = {&a, &b, &c};
-  std::stable_sort(v.begin(), v.end(), [](const ScreenVertex* p, const ScreenVertex* q) { return p->y < q->y; });
+  const std::array<const ScreenVertex*, 3> input = {&a, &b, &c};
+  std::array<int, 3> order = {0, 1, 2};  // order[k] = input index of the k-th vertex from the top
+  // Stable sort by y (ties keep the input order): insertion sort of three.
+  for (int i = 1; i < 3; ++i)
+    for (int j = i; j > 0 && input[order[j]]->y < input[order[j - 1]]->y; --j) std::swap(order[j], order[j - 1]);
+  const std::array<const ScreenVertex*, 3> v = {input[order[0]], input[order[1]], input[order[2]]};
   const ScreenVertex& top = *v[0];
   const ScreenVertex& mid = *v[1];
   const ScreenVertex& bot = *v[2];
@@ -63,10 +67,16 @@ std::optional<SetupTriangle> setup_triangle(const ScreenVertex& a, const ScreenV
   // Which side of the long edge top -> bot the middle vertex lies on (y down: negative = right).
   const int64_t side = (bot.x - top.x) * (mid.y - top.y) - (bot.y - top.y) * (mid.x - top.x);
   t.long_edge_on_left = side < 0;
+  std::array<int, 3> rank{};  // rank[input index] = position from the top
+  for (int k = 0; k < 3; ++k) rank[order[k]] = k;
+  for (int e = 0; e < 3; ++e) {  // input edge e runs from input vertex e to input vertex (e + 1) % 3
+    if (!(original_edges & (1 << e))) continue;
+    const int lo = std::min(rank[e], rank[(e + 1) % 3]), hi = std::max(rank[e], rank[(e + 1) % 3]);
+    t.original_edges |= lo == 0 ? (hi == 1 ? kEdgeTopMid : kEdgeTopBottom) : kEdgeMidBottom;
+  }
 
+  static_assert(kSubpixelBits == 8, "SetupTriangle::ref_x() assumes 8 sub-pixel bits");
   const double one = double(kSubpixelOne);
-  t.ref_x = double(top.x) / one;
-  t.ref_y = double(top.y) / one;
   const double x1 = double(mid.x - top.x) / one, y1 = double(mid.y - top.y) / one;
   const double x2 = double(bot.x - top.x) / one, y2 = double(bot.y - top.y) / one;
   const double inv_area2 = 1.0 / (x1 * y2 - x2 * y1);

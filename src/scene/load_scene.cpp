@@ -12,7 +12,7 @@ LoadedScene load_scene(const std::string& asset_path, const std::string& lights_
   if (is_gltf_path(asset_path)) {
     loaded.gltf = load_gltf_file(asset_path);
     loaded.warnings = loaded.gltf->warnings;
-    loaded.scene = build_scene(*loaded.gltf, loaded.warnings);
+    loaded.scene = build_scene(*loaded.gltf, loaded.warnings, default_scene_limits(), use_file_lights);
   } else if (is_mesh_path(asset_path)) {
     loaded.scene = load_mesh_file(asset_path, loaded.warnings);
   } else {

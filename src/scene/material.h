@@ -10,6 +10,13 @@ struct Material {
   double metallic = 1;        // glTF defaults
   double roughness = 1;
   bool double_sided = false;
+  // Emission (glTF emissiveFactor x KHR_materials_emissive_strength): luminance in nits, linear
+  // RGB. A material with an emissive texture is not used as a light (textures are not sampled).
+  Vec3d emissive_factor{0, 0, 0};
+  double emissive_strength = 1;
+  bool emissive_texture = false;
+
+  Vec3d emission() const { return emissive_factor * emissive_strength; }
 };
 
 // The Phong material of paper eq. 1 and 6 derived from a metallic-roughness material

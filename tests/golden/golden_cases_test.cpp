@@ -107,7 +107,7 @@ void add_camera(vlit::test::GltfBuilder& b, double height, double distance, doub
 
 // The scenes of this suite, written once per run into a temporary directory.
 struct Scenes {
-  fs::path dir, lit_floor, mirrored, no_normals, double_sided;
+  fs::path dir, lit_floor, mirrored, no_normals, double_sided, coarse;
 };
 
 const Scenes& scenes() {
@@ -173,6 +173,16 @@ const Scenes& scenes() {
       b.add_node(b.add_mesh(right.positions, right.normals, right.indices, TINYGLTF_MODE_TRIANGLES, one));
       add_camera(b, 1.6, 3.2, 0.8);
       out.double_sided = b.write((out.dir / "double-sided.glb").string());
+    }
+    {  // A coarse floor and sphere, so the wireframe view shows separate edges at 160 x 120.
+      vlit::test::GltfBuilder b;
+      const int grey = b.add_material({0.8, 0.8, 0.8, 1}, 0, 0.6);
+      const int red = b.add_material({0.85, 0.3, 0.25, 1}, 0, 0.35);
+      const Mesh floor = floor_mesh(1.5, 6), ball = sphere_mesh(0, 0.45, 0, 0.45, 8, 12);
+      b.add_node(b.add_mesh(floor.positions, floor.normals, floor.indices, TINYGLTF_MODE_TRIANGLES, grey));
+      b.add_node(b.add_mesh(ball.positions, ball.normals, ball.indices, TINYGLTF_MODE_TRIANGLES, red));
+      add_camera(b, 1.6, 3.2, 0.8);
+      out.coarse = b.write((out.dir / "coarse.glb").string());
     }
     return out;
   }();
@@ -279,4 +289,12 @@ TEST_CASE("golden: the paper's scenes (assets/paper/)") {
       CAPTURE(light);
       check_golden("paper-" + scene + "-" + light, kPaper + scene + ".glb", kPaper + scene + "-" + light + ".json");
     }
+}
+
+TEST_CASE("golden: debug views (wireframe over the shading, world normals)") {
+  const std::string scene = scenes().coarse.string();
+  const std::string lights = write_lights("views", R"({"lights": [
+    {"type": "point", "position": [0.9, 1.4, 0.9], "intensity": 3, "falloff": 2}]})");
+  SUBCASE("wireframe") { check_golden("view-wireframe", scene, lights, "--view wireframe"); }
+  SUBCASE("normals") { check_golden("view-normals", scene, lights, "--view normals"); }
 }

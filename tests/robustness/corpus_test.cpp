@@ -85,6 +85,7 @@ std::string reason_of(const std::string& error) {
   if (error.find("does not exist") != std::string::npos) return "reference to a missing node or mesh";
   if (error.find("not below the vertex count") != std::string::npos) return "index out of range";
   if (error.find("requires ") != std::string::npos) return "required extension vlit cannot decode";
+  if (error.find("extensions.") != std::string::npos) return "malformed light or emission extension";
   if (error.find("accessor") != std::string::npos || error.find("bufferView") != std::string::npos)
     return "accessor or bufferView out of bounds / malformed";
   return "other: " + error;
@@ -171,4 +172,36 @@ TEST_CASE("malformed glTF corpus: every input bakes or is refused in one line, n
         << controls << " controls, " << controls_refused << " of them refused as listed)";
   for (const auto& [reason, count] : reasons) tally << "\n  " << count << "  " << reason;
   MESSAGE(tally.str());
+}
+
+TEST_CASE("malformed light extensions: refused in one line naming the file, no output") {
+  // Hand-written .gltf texts (no buffers needed): each has one bad value in a light extension.
+  // (An extension value that is not a JSON object never reaches vlit: tinygltf drops it.)
+  const std::string head = R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], )";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"area-lights-not-array", R"("extensions": {"EXT_lights_area": {"lights": {"type": "rect"}}}, "nodes": [{}]})"},
+      {"area-size-string", R"("extensions": {"EXT_lights_area": {"lights": [{"type": "rect", "size": "big"}]}}, "nodes": [{}]})"},
+      {"area-color-short", R"("extensions": {"EXT_lights_area": {"lights": [{"type": "disk", "color": [1, 1]}]}}, "nodes": [{}]})"},
+      {"area-huge-index", R"("extensions": {"EXT_lights_area": {"lights": []}}, "nodes": [{"extensions": {"EXT_lights_area": {"light": 1e300}}}]})"},
+      {"area-negative-index", R"("extensions": {"EXT_lights_area": {"lights": [{"type": "rect"}]}}, "nodes": [{"extensions": {"EXT_lights_area": {"light": -1}}}]})"},
+      {"area-ref-no-root", R"("nodes": [{"extensions": {"EXT_lights_area": {"light": 0}}}]})"},
+      {"linear-from-nan-like", R"("extensions": {"VLIT_lights_linear": {"lights": [{"from": [0, 0, 1e999], "to": [1, 0, 0]}]}}, "nodes": [{}]})"},
+      {"linear-intensity-negative", R"("extensions": {"VLIT_lights_linear": {"lights": [{"from": [0, 0, 0], "to": [1, 0, 0], "intensity": -1}]}}, "nodes": [{}]})"},
+      {"linear-ref-fraction", R"("extensions": {"VLIT_lights_linear": {"lights": [{"from": [0, 0, 0], "to": [1, 0, 0]}]}}, "nodes": [{"extensions": {"VLIT_lights_linear": {"light": 0.5}}}]})"},
+      {"emissive-strength-negative", R"("materials": [{"extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": -2}}}], "nodes": [{}]})"},
+  };
+  const fs::path work = vlit::test::temp_dir("robust-light-ext");
+  for (const auto& [name, body] : cases) {
+    CAPTURE(name);
+    const fs::path input = work / (name + ".gltf");
+    std::ofstream(input) << head << body;
+    const fs::path out = work / (name + "-out.glb");
+    const auto r = run_command(q(kVlit) + " bake " + q(input.string()) + " -o " + q(out.string()));
+    CHECK_MESSAGE(r.exit_code == 1, r.err);
+    const auto err_lines = lines_of(r.err);
+    CHECK_MESSAGE(err_lines.size() == 1, "stderr:\n" << r.err);
+    if (!err_lines.empty()) CHECK_MESSAGE(err_lines[0].find(input.string()) != std::string::npos, err_lines[0]);
+    CHECK_FALSE(fs::exists(out));
+  }
+  fs::remove_all(work);
 }

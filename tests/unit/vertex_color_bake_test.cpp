@@ -3,7 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <fstream>
 
+#include "bake/bake_file.h"
 #include "bake/light_vertices.h"
 #include "bake/vertex_color_bake.h"
 #include "gltf/accessor_reader.h"
@@ -171,4 +173,58 @@ TEST_CASE("an infinite perspective camera stays infinite: no zfar = 0 in the out
     REQUIRE(back.model.cameras.size() == 1);
     CHECK(back.model.cameras[0].perspective.yfov == doctest::Approx(0.5));
   }
+}
+
+TEST_CASE("--specular-eye: one triangle, specular folded into the multiplier by hand") {
+  // Material: base (0.5, 0.25, 1), dielectric (ks = 0.04), roughness 0.5^(1/4) so alpha^2 = 0.5
+  // and m = 2 / alpha^2 - 2 = 2. Point light of intensity 2 at (0, 0, 2), eye at (0, 0, 5).
+  GltfBuilder b;
+  const int mat = b.add_material({0.5, 0.25, 1, 1}, 0, std::pow(0.5, 0.25));
+  b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}, TINYGLTF_MODE_TRIANGLES, mat));
+  const auto dir = vlit::test::temp_dir("specular-eye");
+  const std::string in = b.write((dir / "in.glb").string());
+  const std::string lights = (dir / "lights.json").string();
+  std::ofstream(lights) << R"({"lights": [{"type": "point", "position": [0, 0, 2], "intensity": 2}]})";
+  BakeFileOptions options;
+  options.lights_path = lights;
+  options.encode.format = ColorFormat::kFloat;
+  options.specular_eye = Vec3d{0, 0, 5};
+  const std::string out = (dir / "out.glb").string();
+  bake_file(in, out, options);
+  const GltfFile baked = load_gltf_file(out);
+  const auto c = read_accessor_as_doubles(baked.model, baked.model.meshes[0].primitives[0].attributes.at("COLOR_0"), "out");
+  const double albedo[3] = {0.5, 0.25, 1};
+  // Vertex 0 at the origin: L = V = Rv = +Z; diffuse 2 / 2^2 = 0.5, specular Ip ks (Rv.L)^m = 0.08.
+  for (int ch = 0; ch < 3; ++ch) CHECK(c[ch] == doctest::Approx(0.5 + 0.08 / albedo[ch]).epsilon(1e-6));
+  // Vertex 1 at (1, 0, 0): L = (-1, 0, 2)/sqrt 5, V = (-1, 0, 5)/sqrt 26, Rv = (1, 0, 5)/sqrt 26,
+  // Rv.L = 9 / sqrt 130; diffuse 2 (2/sqrt 5) / 5, specular 0.08 (81/130).
+  const double diffuse1 = 2 * (2 / std::sqrt(5.0)) / 5, specular1 = 0.08 * 81.0 / 130.0;
+  for (int ch = 0; ch < 3; ++ch) CHECK(c[4 + ch] == doctest::Approx(diffuse1 + specular1 / albedo[ch]).epsilon(1e-6));
+  // What a viewer shows, stored x base = kd diffuse + ks specular:
+  CHECK(c[4] * 0.5 == doctest::Approx(0.5 * diffuse1 + 0.04 * 2 * 81.0 / 130.0).epsilon(1e-6));
+
+  // Without an eye, no specular: the diffuse alone.
+  options.specular_eye.reset();
+  const std::string plain = (dir / "plain.glb").string();
+  bake_file(in, plain, options);
+  const GltfFile p = load_gltf_file(plain);
+  const auto d = read_accessor_as_doubles(p.model, p.model.meshes[0].primitives[0].attributes.at("COLOR_0"), "out");
+  CHECK(d[0] == doctest::Approx(0.5).epsilon(1e-6));
+}
+
+TEST_CASE("--specular-eye: a base colour channel of 0 cannot show specular; it is counted, not divided") {
+  GltfBuilder b;
+  const int mat = b.add_material({0.5, 0, 1, 1}, 0, 0.5);
+  b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}, TINYGLTF_MODE_TRIANGLES, mat));
+  const auto dir = vlit::test::temp_dir("specular-black");
+  const std::string in = b.write((dir / "in.glb").string());
+  const std::string lights = (dir / "lights.json").string();
+  std::ofstream(lights) << R"({"lights": [{"type": "point", "position": [0, 0, 2], "intensity": 2}]})";
+  BakeFileOptions options;
+  options.lights_path = lights;
+  options.encode.format = ColorFormat::kFloat;
+  options.specular_eye = Vec3d{0, 0, 5};
+  const BakeFileResult r = bake_file(in, (dir / "out.glb").string(), options);
+  CHECK(r.report.specular_unrepresentable == 3);
+  CHECK(std::any_of(r.warnings.begin(), r.warnings.end(), [](const std::string& w) { return w.find("base colour is 0") != std::string::npos; }));
 }

@@ -1,0 +1,41 @@
+// Emissive geometry as lights (docs/gltf-lights.md "Emissive geometry"):
+// - each segment of a LINES / LINE_STRIP / LINE_LOOP primitive with an emissive material is a
+//   linear light of Ip = emission x world length (emission read as candela per metre, as
+//   VLIT_lights_linear's intensity);
+// - the emissive triangles of a primitive are area lights of Ip = emission (luminance in nits, as
+//   EXT_lights_area), coplanar edge-adjacent triangles merged into one polygon
+//   (mesh/planar_polygons.h); one-sided along the front face unless the material is double-sided.
+// Emission = emissiveFactor x emissiveStrength; a material with an emissiveTexture is not a light
+// (vlit does not sample textures). The lights of a primitive do not light that primitive itself.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/planar_polygons.h"
+#include "scene/light_source.h"
+#include "scene/material.h"
+#include "scene/scene.h"
+
+namespace vlit {
+
+bool emits_light(const Material& material);
+
+// glTF line modes as a list of segments (2 indices each): LINES pairs, LINE_STRIP consecutive
+// indices, LINE_LOOP consecutive plus the closing segment.
+std::vector<std::uint32_t> line_segments(int mode, const std::vector<std::uint32_t>& indices);
+
+// One linear light per segment of non-zero length (world-space positions).
+std::vector<LightSource> emissive_line_lights(const std::vector<Vec3d>& positions, const std::vector<std::uint32_t>& segments,
+                                              const Material& material, const std::string& name);
+
+// Area lights for the triangles of `primitive` (world space), which is Scene::primitives[index].
+std::vector<LightSource> emissive_triangle_lights(const ScenePrimitive& primitive, std::size_t index, const Material& material,
+                                                  const std::string& name, PlanarMergeStats* stats = nullptr);
+
+// Luminous flux of a light, for ranking emissive lights when there are too many: pi L A for a
+// one-sided area light (twice for two-sided), 4 pi Ip for a linear light (isotropic elements).
+double luminous_flux(const LightSource& light);
+
+}  // namespace vlit

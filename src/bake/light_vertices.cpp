@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "bake/batch_lighting.h"
 #include "scene/material.h"
 
 namespace vlit {
@@ -46,6 +47,7 @@ ScenePlan plan_lighting(const Scene& scene, const LightingRequest& request) {
   PlanOptions options;
   options.shade = request.shade;
   options.has_eye = request.eye.has_value();
+  options.float_batch = request.float_batch;
   return make_scene_plan(scene, options);
 }
 
@@ -62,6 +64,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
   constexpr std::size_t kChunk = 1 << 14;  // progress and cancellation granularity
   std::vector<Vec3d> diffuse(kChunk), specular(options.with_specular ? kChunk : 0);
   std::vector<ShadingPoint<double>> points(kChunk);  // per vertex, computed once for all lights
+  BatchChunk batch;                                   // the same points as arrays, for batch kernels
+  std::vector<int> batch_lights;
   for (std::size_t pi = 0; pi < scene.primitives.size(); ++pi) {
     const ScenePrimitive& prim = scene.primitives[pi];
     const double shininess = phong_from_metallic_roughness(scene.material_of(prim)).shininess;
@@ -80,9 +84,15 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         for (long v = 0; v < count; ++v)
           points[v] = make_shading_point(prim.positions[begin + v], prim.normals[begin + v], eye, shininess);
       }
+      // Lights with a float batch kernel first, all in one parallel region; then the others.
+      batch_lights.clear();
       for (int li : plan.lights_of_primitive[pi])
-        accumulate_light(plan.lights[li], options, points.data(), count, diffuse.data(),
-                         options.with_specular ? specular.data() : nullptr);
+        if (plan.batch_of_light[li].light) batch_lights.push_back(li);
+      accumulate_batch_lights(plan, batch_lights, batch, points.data(), count, diffuse.data());
+      for (int li : plan.lights_of_primitive[pi])
+        if (!plan.batch_of_light[li].light)
+          accumulate_light(plan.lights[li], options, points.data(), count, diffuse.data(),
+                           options.with_specular ? specular.data() : nullptr);
       for (std::size_t v = begin; v < end; ++v) {
         result.diffuse[v] = to_output(diffuse[v - begin]);
         if (options.with_specular) result.specular[v] = to_output(specular[v - begin]);

@@ -18,7 +18,8 @@
 // g_ref = 1/|D|^2, where Σ d_i x d_{i+1} (twice the area vector) is formed from the small
 // offsets d_i only and g_i - g_ref is evaluated without cancellation (series for
 // beta/sin(beta) - 1 and an exact expansion of |D|^2 - |a_i||a_{i+1}|).
-// The cross products a_i x a_{i+1} are formed as D x (d_{i+1} - d_i) + d_i x d_{i+1}.
+// The cross products a_i x a_{i+1} are formed as D x (d_{i+1} - d_i) + d_i x d_{i+1} or as
+// a_i x a_{i+1}, whichever has the smaller rounding bound (edge_cross, area_polygon.h).
 //
 // Stiff cases (tests/kernels/area/area_diffuse_test.cpp, "stiff diffuse cases"): tiny,
 // distant (|D|/s = 1e9), thin aspect 1e-6, huge, P in the light's plane, P on an edge, P near an
@@ -65,7 +66,7 @@ R contour_lambert_sum(const ClipPolygon<R>& poly, const Vec3<R>& D, const Vec3<R
     for (int i = 0; i < count; ++i) {
       const Vec3<R>& di = poly.d[i];
       const Vec3<R>& dj = poly.d[(i + 1) % count];
-      const Vec3<R> cr = cross(D, dj - di) + cross(di, dj);  // a_i x a_{i+1}
+      const Vec3<R> cr = edge_cross(D, di, dj);  // a_i x a_{i+1}
       const R s = length(cr);
       if (!(s > R(0))) continue;
       const R beta = std::atan2(s, dot(D + di, D + dj));

@@ -22,7 +22,7 @@
 // Non-convex polygons: Sutherland-Hodgman joins the pieces of a non-convex polygon cut by a
 // plane with "bridge" edges lying on the cut line, traversed in both directions. Every
 // quantity computed from the clipped polygon here is a boundary integral (contour sums,
-// winding numbers, signed fan cubature) for which the bridges cancel as chains; tests
+// winding numbers, contour integrals along the edges) for which the bridges cancel as chains; tests
 // "non-convex L-shape crossing the horizon" and "U-shape clipped into two pieces" check it.
 #pragma once
 
@@ -209,6 +209,19 @@ bool ray_hits_polygon(const ClipPolygon<R>& poly, const AreaView<R>& view, const
   if (!std::isfinite(t)) return false;
   const Vec3<R> hit = dir * t - view.D;  // relative to c
   return winding_number(poly, view, hit) != 0;
+}
+
+// a x b for a = D + d_i, b = D + d_j (D = c - P, d relative to the light's centre c), by the
+// form with the smaller rounding error: D x (d_j - d_i) + d_i x d_j keeps a small light far away
+// exact (terms ~ |D| |d|), a x b keeps an edge close to P exact when P is far from c (terms
+// ~ |a| |b|; the first form would cancel terms ~ |d|^2 down to ~ |a| |b|).
+template <class R>
+Vec3<R> edge_cross(const Vec3<R>& D, const Vec3<R>& di, const Vec3<R>& dj) {
+  const Vec3<R> a = D + di, b = D + dj;
+  const R direct = length_squared(a) * length_squared(b);
+  const R split = std::max(length_squared(D) * length_squared(dj - di), length_squared(di) * length_squared(dj));
+  if (direct < split) return cross(a, b);
+  return cross(D, dj - di) + cross(di, dj);
 }
 
 // max(0, cos alpha)^m from the angle alpha in [0, pi], accurate for alpha -> 0 and large m:

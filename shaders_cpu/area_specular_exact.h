@@ -1,35 +1,41 @@
-// Area light, specular, reference quality: the Phong lobe integrated over the visible light.
+// Area light, specular, reference quality: the Phong lobe integrated over the visible light,
+// reduced to a contour integral and integrated along the edges with error control.
 //
 // Computes (unit intensity, ks = 1; conventions.h):
 //   Is(exact) = ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA
 //             = ∫_Omega [N.w > 0] max(0, Rv.w)^m dw        (cos theta_l dA / r^2 = dw)
-// by error-controlled adaptive cubature over the polygon in the light's plane.
 //
 // Sources: MISSION.md "Area light" (the definition); Picott 1992 "Future work" (the paper has no
-// exact area specular). Arvo 1995 gives a closed form for integer m (not used here, see
-// docs/area-lights.md); its form needs exactly the clipping done below.
+// exact area specular). The reduction to the boundary is the same idea as eq. 9 (Lambert's
+// contour integral) with polar coordinates about Rv instead of Stokes' theorem.
 //
-// Method:
+// Method (docs/area-lights.md "Exact specular"):
 //  1. clip the light to the horizon N.(x - P) >= 0 and, for m > 0, to the lobe's half-space
-//     Rv.(x - P) >= 0 (after that the integrand is smooth: no kink of max(0, .));
-//  2. fan-triangulate the clipped polygon (signed triangles, so non-convex polygons and
-//     Sutherland-Hodgman bridge edges are exact as chains) from the point where the peak
-//     direction (area_specular_peak.h) meets the plane, and split again at the foot of P: the
-//     two places where the integrand can be sharply peaked (lobe width ~ 1/sqrt(m), and the
-//     factor h / r^3 of width ~ h for a light close to P) are vertices of the initial mesh;
-//  3. on each triangle, a Duffy-collapsed 5x5 Gauss-Legendre rule with a 4x4 one as error
-//     estimate; globally adaptive: split the triangle with the largest error estimate into 4
-//     until Σ error ≤ tol |Σ value| (tol = SpecularOptions::exact_tolerance) or the fixed
-//     work list (kExactMaxTriangles) is full. The error estimate is that of the 4x4 rule; the 5x5
-//     result that is returned is typically far more accurate.
-//  The work list is a fixed array (kExactMaxTriangles * 64 bytes = 128 KiB of stack): no heap.
+//     Rv.(x - P) >= 0, so that c = Rv.w >= 0 on the visible set;
+//  2. polar coordinates (Theta, phi) about the axis Rv: dw = sin Theta dTheta dphi and the radial
+//     integral is closed: ∫_0^Theta cos^m t sin t dt = (1 - cos^{m+1} Theta) / (m + 1). Fanning the
+//     spherical polygon from Rv (signed: valid whether Rv is inside or not),
+//       Is = -orient / (m + 1) Σ_edges ∫ (1 - c^{m+1}) dphi.
+//     Along an edge x(t) = a + t e (a = Q_i - P, e = Q_{i+1} - Q_i, t in [0, 1]),
+//     dphi = Rv.(x x dx) / |Rv x x|^2 = Rv.(a x b) dt / |Rv x x|^2 (the numerator is constant), so
+//       Is = -orient / (m + 1) Σ_i Rv.(a_i x b_i) ∫_0^1 (1 - c(t)^{m+1}) / |Rv x x(t)|^2 dt,
+//     a smooth 1D integrand: where the edge passes through Rv, (1 - c^{m+1}) / |Rv x x|^2 ->
+//     (m + 1) / (2 |x|^2); 1 - c^{m+1} = -expm1((m + 1) log1p(-(1 - c))) with
+//     1 - c = |Rv x x|^2 / (|x| (|x| + Rv.x)), no cancellation near the peak.
+//     When Rv is outside the visible light the "1" part sums to 0 exactly (winding number 0) and
+//     only the tail is integrated: Is = orient Σ_i Rv.(a_i x b_i) / (m + 1) ∫ c^{m+1} / |Rv x x|^2 dt
+//     (no cancellation of terms ~ 1 / (m + 1) down to a tiny value).
+//  3. globally adaptive Gauss-Kronrod (7/15 points) over all edges: each edge starts split at the
+//     point closest to P (the 1/|x|^2 peak, width ~ its distance d_P: graded cuts at d_P 4^k) and at
+//     the point closest in angle to Rv (the lobe, width ~ |x| / sqrt(m + 1): graded likewise);
+//     the piece with the largest |K15 - G7| is bisected until Σ error <= tol |Σ value|
+//     (tol = SpecularOptions::exact_tolerance) or the fixed work list is full.
+//  The work list is a fixed array (kExactMaxPieces * 48 bytes = 96 KiB of stack): no heap.
 //
 // Departures: none from the definition; the paper's Is is the peak (area_specular_peak.h).
 // Stiff cases: tests/kernels/area/area_specular_test.cpp "stiff exact specular cases" (tiny,
-// distant, thin, huge, grazing, horizon crossing, behind, shininess 1..1e4).
-// Measured accuracy (docs/area-lights.md; `./build/area/tests/area_light_tests`): 6.2e-11 on 40
-// random cases, ≤ 2.2e-9 on the stiff table, m up to 1e4 — but NOT met: a light 1e3 times larger
-// than its distance (15% low: the fixed work list fills), m = 1e4 at the light's edge (3e-7).
+// thin, huge, P 1e-6 above the light, grazing, horizon crossing, behind, shininess 1..1e4).
+// Measured accuracy: docs/area-lights.md; `./build/release/tests/area_light_tests -tc="*exact*"`.
 #pragma once
 
 #include <algorithm>
@@ -37,115 +43,101 @@
 #include <cmath>
 #include <limits>
 
+#include "area_polygon.h"
 #include "area_specular_peak.h"
 
 namespace vlit {
 
-inline constexpr int kExactMaxTriangles = 2048;
+inline constexpr int kExactMaxPieces = 2048;
 
 namespace area_exact_detail {
 
 template <class R>
-struct Tri {
-  R x[3], y[3];
-  R value, error;
+struct Piece {
+  R t0, t1, value, error;
+  int edge;
 };
 
+// Gauss-Kronrod 7/15 on [-1, 1]: Kronrod nodes (positive half, the last is 0) and weights; the
+// Gauss nodes are the odd-indexed Kronrod nodes.
 template <class R>
-struct Integrand {
-  Vec3<R> D, u, v, rv;
-  R height, m;
-  R operator()(R x, R y) const {
-    const Vec3<R> a = D + u * x + v * y;
-    const R r2 = length_squared(a);
-    const R r = std::sqrt(r2);
-    R lobe = R(1);
-    if (m != R(0)) {
-      const R c = dot(rv, a) / r;
-      // Odd extension sign(c)|c|^m: only reached by fan triangles of non-convex polygons that
-      // leave the clipped region; their signed contributions cancel there.
-      lobe = c == R(0) ? R(0) : std::copysign(std::exp(m * std::log(std::abs(c))), c);
-    }
-    return lobe * height / (r2 * r);
+struct Kronrod15 {
+  static constexpr R x[8] = {R(0.991455371120812639206854697526329), R(0.949107912342758524526189684047851),
+                             R(0.864864423359769072789712788640926), R(0.741531185599394439863864773280788),
+                             R(0.586087235467691130294144845693013), R(0.405845151377397166906606412076961),
+                             R(0.207784955007898467600689403773245), R(0)};
+  static constexpr R wk[8] = {R(0.022935322010529224963732008058970), R(0.063092092629978553290700663189204),
+                              R(0.104790010322250183839876322541518), R(0.140653259715525918745189590510238),
+                              R(0.169004726639267902826583426598550), R(0.190350578064785409913256402421014),
+                              R(0.204432940075298892414161999234649), R(0.209482141084727828012999174891714)};
+  static constexpr R wg[4] = {R(0.129484966168869693270611432679082), R(0.279705391489276667901467771423780),
+                              R(0.381830050505118944950369775488975), R(0.417959183673469387755102040816327)};
+};
+
+// (1 - c^{m+1}) / |Rv x x|^2 at the point x (relative to P), c = Rv.x / |x|: the radial integral
+// of the lobe per unit azimuth about Rv, divided by |Rv x x|^2 (dphi = Rv.(x x dx) / |Rv x x|^2).
+// tail: c^{m+1} / |Rv x x|^2 instead (the "1" part integrates to the winding number exactly).
+template <class R>
+R lobe_per_azimuth(const Vec3<R>& x, const Vec3<R>& rv, R m, bool tail = false) {
+  const R r = length(x);
+  const R rx = dot(rv, x);
+  const R perp2 = length_squared(cross(rv, x));
+  if (!(r > R(0))) return R(0);
+  if (tail) {
+    if (!(perp2 > R(0))) return R(0);
+    if (!(rx > R(0))) return m == R(0) ? rx / r / perp2 : R(0);
+    return std::exp((m + R(1)) * std::log(rx / r)) / perp2;
   }
-};
-
-// Gauss-Legendre nodes and weights on [0, 1].
-template <class R>
-struct GaussRule5 {
-  static constexpr int n = 5;
-  static constexpr R x[5] = {R(0.5) - R(0.4530899229693319963988134391496965),
-                             R(0.5) - R(0.2692346550528415455863364804340580), R(0.5),
-                             R(0.5) + R(0.2692346550528415455863364804340580),
-                             R(0.5) + R(0.4530899229693319963988134391496965)};
-  static constexpr R w[5] = {R(0.1184634425280945437571320203599587),
-                             R(0.2393143352496832340206457574604735),
-                             R(0.2844444444444444444444444444444444),
-                             R(0.2393143352496832340206457574604735),
-                             R(0.1184634425280945437571320203599587)};
-};
-template <class R>
-struct GaussRule4 {
-  static constexpr int n = 4;
-  static constexpr R x[4] = {R(0.5) - R(0.4305681557970262876596226036441820),
-                             R(0.5) - R(0.1699905217924281324880709381430226),
-                             R(0.5) + R(0.1699905217924281324880709381430226),
-                             R(0.5) + R(0.4305681557970262876596226036441820)};
-  static constexpr R w[4] = {R(0.1739274225687269286865319746109997),
-                             R(0.3260725774312730713134680253890003),
-                             R(0.3260725774312730713134680253890003),
-                             R(0.1739274225687269286865319746109997)};
-};
-
-// Duffy rule on the triangle (p0, p1, p2), collapsed at p0: p = p0 + s e1 + s t (e2 - e1),
-// Jacobian s (e1 x e2) (signed: CCW triangles count positive).
-template <class Rule, class R, class F>
-R duffy(const F& f, const R* x, const R* y) {
-  const R e1x = x[1] - x[0], e1y = y[1] - y[0];
-  const R e2x = x[2] - x[0], e2y = y[2] - y[0];
-  const R jac = e1x * e2y - e1y * e2x;
-  if (jac == R(0)) return R(0);
-  R sum = 0;
-  for (int i = 0; i < Rule::n; ++i) {
-    const R s = Rule::x[i];
-    R inner = 0;
-    for (int j = 0; j < Rule::n; ++j) {
-      const R t = Rule::x[j];
-      inner += Rule::w[j] * f(x[0] + s * (e1x + t * (e2x - e1x)), y[0] + s * (e1y + t * (e2y - e1y)));
-    }
-    sum += Rule::w[i] * s * inner;
+  if (!(rx > R(0))) {  // only for m = 0 (no lobe clip): 1 - c, c <= 0
+    return perp2 > R(0) ? (R(1) - rx / r) / perp2 : R(0);
   }
-  return sum * jac;
+  const R base = r * (r + rx);  // perp2 = (1 - c) * base
+  const R one_minus_c = std::min(perp2 / base, R(1));
+  if (one_minus_c == R(0)) return (m + R(1)) / base;
+  // (1 - c^{m+1}) / (1 - c), c^{m+1} = exp((m + 1) log1p(-(1 - c)))
+  const R ratio = -std::expm1((m + R(1)) * std::log1p(-one_minus_c)) / one_minus_c;
+  return ratio / base;
 }
+
+// One edge x(t) = a + t e as seen from P, and the radial-integrated lobe along it.
+template <class R>
+struct EdgeIntegrand {
+  Vec3<R> a, e, rv;
+  R m;
+  bool tail = false;
+  R operator()(R t) const { return lobe_per_azimuth(a + e * t, rv, m, tail); }
+};
 
 template <class R, class F>
-void evaluate(const F& f, Tri<R>& tri) {
-  const R fine = duffy<GaussRule5<R>>(f, tri.x, tri.y);
-  const R coarse = duffy<GaussRule4<R>>(f, tri.x, tri.y);
-  tri.value = fine;
-  tri.error = std::abs(fine - coarse);
+void evaluate(const F& f, Piece<R>& p) {
+  using K = Kronrod15<R>;
+  const R mid = (p.t0 + p.t1) / 2, half = (p.t1 - p.t0) / 2;
+  const R f0 = f(mid);
+  R k = K::wk[7] * f0, g = K::wg[3] * f0;
+  for (int i = 0; i < 7; ++i) {
+    const R s = f(mid - half * K::x[i]) + f(mid + half * K::x[i]);
+    k += K::wk[i] * s;
+    if (i % 2 == 1) g += K::wg[i / 2] * s;
+  }
+  p.value = k * half;
+  p.error = std::abs((k - g) * half);
 }
 
 template <class R>
-bool less_error(const Tri<R>& a, const Tri<R>& b) { return a.error < b.error; }
-
-// Barycentric inside test (closed) of point (px, py) in triangle.
-template <class R>
-bool triangle_contains(const R* x, const R* y, R px, R py) {
-  const R d0 = (x[1] - x[0]) * (py - y[0]) - (y[1] - y[0]) * (px - x[0]);
-  const R d1 = (x[2] - x[1]) * (py - y[1]) - (y[2] - y[1]) * (px - x[1]);
-  const R d2 = (x[0] - x[2]) * (py - y[2]) - (y[0] - y[2]) * (px - x[2]);
-  return (d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0);
-}
+bool less_error(const Piece<R>& a, const Piece<R>& b) { return a.error < b.error; }
 
 }  // namespace area_exact_detail
 
 // Is(exact) of the horizon-clipped polygon `horizon_clipped`.
+// rv is normalised here: the identities below (|Rv x x|^2 = |x|^2 - (Rv.x)^2) need a unit Rv, and
+// the definition's lobe is max(0, Rv.w)^m with unit Rv (a float-rounded Rv is off by ~1e-7, which
+// m = 1e3 would turn into 1e-4).
 template <class R>
 R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& view,
-                      const Vec3<R>& rv, R shininess, R tolerance) {
+                      const Vec3<R>& rv_in, R shininess, R tolerance) {
   using namespace area_exact_detail;
   if (!view.lit || horizon_clipped.count < 3) return R(0);
+  const Vec3<R> rv = normalize(rv_in);
   // 1. Lobe clip (not for m = 0, where max(0, c)^0 = 1 everywhere: the solid angle).
   ClipPolygon<R> lobe_clipped;
   const ClipPolygon<R>* poly = &horizon_clipped;
@@ -155,78 +147,99 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   }
   const int n = poly->count;
   if (n < 3) return R(0);
-  const Integrand<R> f{view.D, view.u, view.v, rv, view.height, shininess};
-
-  // 2. Apex: where the peak direction meets the plane; second split point: the foot of P.
-  std::array<R, kMaxClipVertices> px{}, py{};
-  for (int i = 0; i < n; ++i) { px[i] = dot(view.u, poly->d[i]); py[i] = dot(view.v, poly->d[i]); }
-  R ax = px[0], ay = py[0];
-  if (shininess != R(0)) {
-    const AreaPeak<R> peak = area_specular_peak_direction(*poly, view, rv);
-    const R toward = -dot(view.normal, peak.direction);
-    if (peak.visible && toward > R(0)) {
-      const Vec3<R> hit = peak.direction * (view.height / toward) - view.D;
-      if (is_finite(hit)) { ax = dot(view.u, hit); ay = dot(view.v, hit); }
-    }
-  }
-  const R fx = -dot(view.u, view.D), fy = -dot(view.v, view.D);  // foot of P
-
   const R lobe_width = R(1) / std::sqrt(shininess + R(1));  // ~ angular width of cos^m
-  std::array<Tri<R>, kExactMaxTriangles> heap;
+  // Rv outside the visible light: Σ ∫ dphi = 0 exactly, so integrate only the tail c^{m+1}
+  // (form B); otherwise the edge terms, each ~ 1 / (m + 1), would cancel down to a value that
+  // can be 1e-12 of them (a lobe that barely reaches the light).
+  // Only when Rv is at least a lobe width away from the light: closer, the tail's integrand
+  // c^{m+1} / |Rv x x|^2 has a peak of height 1 / angle^2 and the full form is the better one.
+  const bool tail = shininess > R(0) && area_specular_peak_direction(*poly, view, rv).angle > lobe_width;
+
+  // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.
+  std::array<EdgeIntegrand<R>, kMaxClipVertices> edge{};
+  std::array<R, kMaxClipVertices> weight{};
+  std::array<Piece<R>, kExactMaxPieces> heap;
   int size = 0;
-  R value = 0, error = 0;  // running sums over the work list
-  auto push = [&](R x0, R y0, R x1, R y1, R x2, R y2) {
-    Tri<R>& t = heap[size];
-    t.x[0] = x0; t.x[1] = x1; t.x[2] = x2;
-    t.y[0] = y0; t.y[1] = y1; t.y[2] = y2;
-    evaluate(f, t);
-    // Forced refinement at the lobe's peak: a triangle with the peak at a corner is split
-    // until its angular size (as seen from P) is below 2 lobe widths, so a narrow lobe cannot
-    // slip between the nodes of a large triangle (false convergence).
-    const bool at_peak = (x0 == ax && y0 == ay) || (x1 == ax && y1 == ay) || (x2 == ax && y2 == ay);
-    if (shininess > R(0) && at_peak) {
-      const R size = std::max({std::hypot(x1 - x0, y1 - y0), std::hypot(x2 - x0, y2 - y0), std::hypot(x2 - x1, y2 - y1)});
-      const R dist = length(view.D + view.u * ax + view.v * ay);
-      if (size > R(2) * lobe_width * dist) t.error = std::numeric_limits<R>::infinity();
-    }
-    value += t.value; error += t.error;
+  R value = 0, error = 0;
+  auto push = [&](int i, R t0, R t1) {
+    Piece<R>& p = heap[size];
+    p.t0 = t0; p.t1 = t1; p.edge = i;
+    evaluate(edge[i], p);
+    p.value *= weight[i];
+    p.error *= std::abs(weight[i]);
+    value += p.value; error += p.error;
     ++size;
     std::push_heap(heap.begin(), heap.begin() + size, less_error<R>);
   };
-  for (int i = 0; i < n && size + 3 <= kExactMaxTriangles; ++i) {
-    const int j = (i + 1) % n;
-    const R tx[3] = {ax, px[i], px[j]}, ty[3] = {ay, py[i], py[j]};
-    if (triangle_contains(tx, ty, fx, fy)) {
-      push(fx, fy, tx[0], ty[0], tx[1], ty[1]);
-      push(fx, fy, tx[1], ty[1], tx[2], ty[2]);
-      push(fx, fy, tx[2], ty[2], tx[0], ty[0]);
-    } else {
-      push(ax, ay, px[i], py[i], px[j], py[j]);
+  for (int i = 0; i < n; ++i) {
+    const Vec3<R>& di = poly->d[i];
+    const Vec3<R>& dj = poly->d[(i + 1) % n];
+    const Vec3<R> e = dj - di;
+    const R e2 = length_squared(e);
+    if (!(e2 > R(0))) continue;
+    const Vec3<R> cr = edge_cross(view.D, di, dj);  // a x b
+    const R w = dot(rv, cr) / (shininess + R(1));
+    if (w == R(0)) continue;  // the edge's plane contains Rv: dphi = 0 along it
+    edge[i] = {view.D + di, e, rv, shininess, tail};
+    weight[i] = w;
+    // Initial cuts: graded around the point closest to P and the point closest in angle to Rv.
+    std::array<R, 48> cuts{};
+    int nc = 0;
+    cuts[nc++] = R(0);
+    cuts[nc++] = R(1);
+    auto add = [&](R t) { if (t > R(0) && t < R(1) && nc < int(cuts.size())) cuts[nc++] = t; };
+    auto graded = [&](R t, R width) {
+      if (!(width > R(0)) || !std::isfinite(t)) return;
+      add(t);
+      for (R s = width; s < R(1) && nc + 2 <= int(cuts.size()); s *= R(4)) { add(t - s); add(t + s); }
+    };
+    const Vec3<R>& a = edge[i].a;
+    const R len = std::sqrt(e2);
+    const R tp = std::clamp(-dot(a, e) / e2, R(0), R(1));
+    graded(tp, length(a + e * tp) / len);
+    if (shininess > R(0)) {
+      // x(t) parallel to the projection of Rv on the edge's plane: a x w + t (e x w) = 0.
+      const Vec3<R> pole = cr / length(cr);
+      const Vec3<R> wdir = rv - pole * dot(rv, pole);
+      const R den = dot(cross(e, wdir), pole);
+      if (den != R(0)) {
+        const R tr = std::clamp(-dot(cross(a, wdir), pole) / den, R(0), R(1));
+        // the integrand's peak width there: the lobe's, or (tail form) the angle to Rv if smaller
+        const Vec3<R> xr = a + e * tr;
+        const R angle = std::atan2(length(cross(rv, xr)), dot(rv, xr));
+        graded(tr, std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len);
+      }
     }
+    std::sort(cuts.begin(), cuts.begin() + nc);
+    for (int k = 0; k + 1 < nc && size < kExactMaxPieces; ++k)
+      if (cuts[k + 1] > cuts[k]) push(i, cuts[k], cuts[k + 1]);
   }
 
-  // 3. Global adaptivity: split the worst triangle into 4 (midpoint subdivision).
+  // 3. Global adaptivity: bisect the piece with the largest error estimate.
   int splits = 0;
-  while (error > tolerance * std::abs(value) && size + 3 <= kExactMaxTriangles) {
+  while (error > tolerance * std::abs(value) && size + 2 <= kExactMaxPieces) {
     std::pop_heap(heap.begin(), heap.begin() + size, less_error<R>);
-    const Tri<R> t = heap[--size];
-    const R m01x = (t.x[0] + t.x[1]) / 2, m01y = (t.y[0] + t.y[1]) / 2;
-    const R m12x = (t.x[1] + t.x[2]) / 2, m12y = (t.y[1] + t.y[2]) / 2;
-    const R m20x = (t.x[2] + t.x[0]) / 2, m20y = (t.y[2] + t.y[0]) / 2;
-    push(t.x[0], t.y[0], m01x, m01y, m20x, m20y);  // keeps the collapse point t[0]
-    push(m01x, m01y, t.x[1], t.y[1], m12x, m12y);
-    push(m20x, m20y, m12x, m12y, t.x[2], t.y[2]);
-    push(m12x, m12y, m20x, m20y, m01x, m01y);
+    const Piece<R> p = heap[--size];
+    value -= p.value; error -= p.error;
+    const R mid = (p.t0 + p.t1) / 2;
+    if (!(mid > p.t0 && mid < p.t1)) {  // cannot be split further: keep it, stop
+      heap[size++] = p;
+      std::push_heap(heap.begin(), heap.begin() + size, less_error<R>);
+      value += p.value; error += p.error;
+      break;
+    }
+    push(p.edge, p.t0, mid);
+    push(p.edge, mid, p.t1);
     // Running sums drift by rounding; recount them exactly now and then.
-    value -= t.value; error -= t.error;
-    if (++splits % 32 == 0 || !std::isfinite(error)) {
+    if (++splits % 64 == 0 || !std::isfinite(error)) {
       value = 0; error = 0;
       for (int k = 0; k < size; ++k) { value += heap[k].value; error += heap[k].error; }
     }
   }
   value = 0;
   for (int k = 0; k < size; ++k) value += heap[k].value;
-  return std::max(value, R(0));
+  if (tail) return std::max(view.orient * value, R(0));  // Is = orient Σ w_i ∫ c^{m+1} / |Rv x x|^2
+  return std::max(-view.orient * value, R(0));
 }
 
 }  // namespace vlit

@@ -1,29 +1,33 @@
-// Disk light: a one-sided (or two-sided) Lambertian disk, shaded as a bracket of polygons.
+// Disk light: a one-sided (or two-sided) Lambertian disk. Diffuse analytic, specular through a
+// bracket of polygons prepared once per light.
 //
-// Computes the same quantities as area_light.h (diffuse, peak / neighbourhood / exact specular)
+// Computes the same quantities as area_light.h (diffuse; peak / neighbourhood / exact specular)
 // for the disk {x : (x - center).normal = 0, |x - center| <= radius}, emitting toward `normal`.
 //
-// Method (docs/area-lights.md "Disk lights"): not analytic. For n = 8, 16, 32, 64 edges we shade
-// the inscribed regular n-gon (vertex radius R) and the circumscribed one (R / cos(pi/n)) with
-// the area kernels. All integrands are >= 0 and the peak is monotone in the set, so
-//   I_in(n) <= I_disk <= I_out(n)      (a rigorous bracket, diffuse and every specular method)
-// and we return I(n) = (2 I_out + I_in) / 3, the combination whose area is exact to O(n^-4)
-// (A_in/A = 1 - 2 pi^2/(3 n^2) + ..., A_out/A = 1 + pi^2/(3 n^2) + ...), which lies inside the
-// bracket. n is the first that brings the bracket below the requested relative tolerance
-// (|I_out - I_in| <= tol (I_out + I_in)) for the diffuse and the requested specular; n = 64 is
-// the cap (kMaxAreaVertices), and the bracket width is then the error bound (shade_disk_bracket
-// reports it). Sources: Picott 1992 eq. 9-12 via the area kernels; Archimedes' bracket.
+// Method (docs/area-lights.md "Disk lights"):
+// - diffuse: Lambert's contour integral (Picott 1992 eq. 9) in closed form over the circle, with
+//   horizon clipping (arc + chord): disk_diffuse_contour.h. Rounding-level accurate; no polygon.
+// - exact specular: the lobe's contour integral over the disk's own boundary (rim arcs and
+//   chords), error-controlled: disk_specular_exact.h.
+// - peak and neighbourhood specular: the inscribed regular 64-gon (vertex radius R) and the
+//   circumscribed one (R / cos(pi/64)), prepared once per light by prepare_disk_light, shaded by
+//   the area specular kernels. All integrands are >= 0 and the peak is monotone in the set, so
+//     I_in <= I_disk <= I_out   (a rigorous bracket for the exact specular and the peak)
+//   and we return (2 I_out + I_in) / 3, whose area is exact to O(n^-4)
+//   (A_in/A = 1 - 2 pi^2/(3 n^2) + ..., A_out/A = 1 + pi^2/(3 n^2) + ...).
+// Sources: Picott 1992 eq. 9-12; Archimedes' bracket for the specular.
 // Conventions: conventions.h. Departures from the paper: the paper has no disk lights.
-// Stiff cases: tests/kernels/area/disk_test.cpp (far disk = point light, P near the rim,
-// horizon crossing, behind, degenerate radius rejected).
-// Measured accuracy (docs/area-lights.md, `./build/area/tests/area_light_tests -tc="disk*"`):
-// diffuse 5.5e-8 .. 7.7e-7 at n = 64 away from the rim, 9.1e-5 with P 0.1 radius from the rim.
+// Scalar type: computed in AreaReal<T> (double for T = float), rounded once.
+// Stiff cases: tests/kernels/area/disk_test.cpp.
+// Measured accuracy: docs/area-lights.md "Disk lights" (`./build/release/tests/area_light_tests -tc="disk*"`).
 #pragma once
 
 #include <cmath>
 #include <stdexcept>
 
 #include "area_light.h"
+#include "disk_diffuse_contour.h"
+#include "disk_specular_exact.h"
 
 namespace vlit {
 
@@ -35,15 +39,17 @@ struct DiskLight {
   bool two_sided = false;
 };
 
-inline constexpr double kDiskDefaultTolerance = 1e-6;
+// Edge count of the specular bracket's polygons (the area kernels' vertex cap).
+inline constexpr int kDiskSpecularEdges = kMaxAreaVertices;
 
 // The regular n-gon of vertex radius `vertex_radius` in the disk's plane, CCW seen from normal.
+// Throws std::invalid_argument for a disk without a finite center, a non-zero normal and radius > 0.
 template <class T>
 PreparedAreaLight<T> disk_polygon(const DiskLight<T>& light, int n, AreaReal<T> vertex_radius) {
   using R = AreaReal<T>;
   if (n < 3 || n > kMaxAreaVertices) throw std::invalid_argument("disk light: bad edge count");
   const Vec3<R> nl = normalize(static_cast<Vec3<R>>(light.normal));
-  if (!(length_squared(nl) > R(0)) || !(light.radius > T(0)) || !std::isfinite(light.radius) ||
+  if (!is_finite(nl) || !(length_squared(nl) > R(0)) || !(light.radius > T(0)) || !std::isfinite(light.radius) ||
       !is_finite(light.center))
     throw std::invalid_argument("disk light: needs a finite center, a non-zero normal and radius > 0");
   const Vec3<R> helper = std::abs(nl.x) < R(0.6) ? Vec3<R>{1, 0, 0} : Vec3<R>{0, 1, 0};
@@ -65,38 +71,84 @@ PreparedAreaLight<T> disk_polygon(const DiskLight<T>& light, int n, AreaReal<T> 
   return pl;
 }
 
+// Per-light constants, computed once: the frame (in the polygons) and the specular bracket.
 template <class T>
-struct DiskBracket {
-  Response<T> inscribed, circumscribed, estimate;
-  int edges = 0;
+struct PreparedDiskLight {
+  AreaReal<T> radius{0};
+  PreparedAreaLight<T> inscribed, circumscribed;  // same center, normal and frame (u, v)
 };
 
 template <class T>
-DiskBracket<T> shade_disk_bracket(const DiskLight<T>& light, const ShadingPoint<T>& sp,
-                                  const SpecularOptions& spec, double tolerance = kDiskDefaultTolerance,
-                                  int min_edges = 8, int max_edges = kMaxAreaVertices) {
+PreparedDiskLight<T> prepare_disk_light(const DiskLight<T>& light) {
   using R = AreaReal<T>;
-  DiskBracket<T> b;
-  for (int n = min_edges; n <= max_edges; n *= 2) {
-    const R r = static_cast<R>(light.radius);
-    const Response<T> in = shade_area(disk_polygon(light, n, r), sp, spec);
-    const Response<T> out = shade_area(disk_polygon(light, n, r / std::cos(R(M_PI) / R(n))), sp, spec);
-    b.inscribed = in;
-    b.circumscribed = out;
-    b.edges = n;
-    b.estimate.diffuse = static_cast<T>((R(2) * out.diffuse + in.diffuse) / R(3));
-    b.estimate.specular = static_cast<T>((R(2) * out.specular + in.specular) / R(3));
-    const bool diffuse_ok = std::abs(R(out.diffuse) - R(in.diffuse)) <= R(tolerance) * (R(out.diffuse) + R(in.diffuse));
-    const bool specular_ok = std::abs(R(out.specular) - R(in.specular)) <= R(tolerance) * (R(out.specular) + R(in.specular));
-    if (diffuse_ok && specular_ok) break;
-    if (n * 2 > max_edges) break;
+  PreparedDiskLight<T> pd;
+  pd.radius = static_cast<R>(light.radius);
+  pd.inscribed = disk_polygon(light, kDiskSpecularEdges, pd.radius);
+  pd.circumscribed = disk_polygon(light, kDiskSpecularEdges, pd.radius / std::cos(R(M_PI) / R(kDiskSpecularEdges)));
+  return pd;
+}
+
+// Specular of one prepared polygon (no diffuse): the area kernels' dispatch.
+template <class T, class R = AreaReal<T>>
+R polygon_specular(const PreparedAreaLight<T>& pl, const Vec3<R>& p, const Vec3<R>& n, const Vec3<R>& rv, R m,
+                   const SpecularOptions& spec) {
+  const AreaView<R> view = make_area_view(pl, p);
+  if (!view.lit) return R(0);
+  ClipPolygon<R> visible;
+  clip_to_horizon(pl, view, n, visible);
+  if (visible.count < 3) return R(0);
+  switch (spec.method) {
+    case SpecularMethod::kNone: return R(0);
+    case SpecularMethod::kPeak: return area_specular_peak(visible, view, rv, m);
+    case SpecularMethod::kNeighborhood:
+      return area_specular_neighborhood(visible, view, rv, m, spec.neighborhood_samples);
+    case SpecularMethod::kExact:
+      return area_specular_exact(visible, view, rv, m, static_cast<R>(spec.exact_tolerance));
   }
-  return b;
+  return R(0);
 }
 
 template <class T>
+struct DiskSpecularBracket {
+  AreaReal<T> inscribed{0}, circumscribed{0}, estimate{0};
+};
+
+template <class T>
+DiskSpecularBracket<T> disk_specular_bracket(const PreparedDiskLight<T>& light, const ShadingPoint<T>& sp,
+                                             const SpecularOptions& spec) {
+  using R = AreaReal<T>;
+  const Vec3<R> p = static_cast<Vec3<R>>(sp.p), n = static_cast<Vec3<R>>(sp.n), rv = static_cast<Vec3<R>>(sp.rv);
+  const R m = static_cast<R>(sp.shininess);
+  DiskSpecularBracket<T> b;
+  b.inscribed = polygon_specular(light.inscribed, p, n, rv, m, spec);
+  b.circumscribed = polygon_specular(light.circumscribed, p, n, rv, m, spec);
+  b.estimate = (R(2) * b.circumscribed + b.inscribed) / R(3);
+  return b;
+}
+
+// Shades with a prepared disk (the bake loop's form): no allocation, no polygon construction.
+template <class T>
+Response<T> shade_disk(const PreparedDiskLight<T>& light, const ShadingPoint<T>& sp, const SpecularOptions& spec) {
+  using R = AreaReal<T>;
+  const Vec3<R> p = static_cast<Vec3<R>>(sp.p);
+  const AreaView<R> view = make_area_view(light.inscribed, p);
+  if (!view.lit) return {};
+  Response<T> r;
+  r.diffuse = static_cast<T>(disk_diffuse_contour(view, light.radius, static_cast<Vec3<R>>(sp.n)));
+  if (spec.method == SpecularMethod::kExact) {
+    r.specular = static_cast<T>(disk_specular_exact(view, light.radius, static_cast<Vec3<R>>(sp.n),
+                                                    static_cast<Vec3<R>>(sp.rv), static_cast<R>(sp.shininess),
+                                                    static_cast<R>(spec.exact_tolerance)));
+  } else if (spec.method != SpecularMethod::kNone) {
+    r.specular = static_cast<T>(disk_specular_bracket(light, sp, spec).estimate);
+  }
+  return r;
+}
+
+// Convenience form: validates and prepares on every call (throws std::invalid_argument).
+template <class T>
 Response<T> shade_disk(const DiskLight<T>& light, const ShadingPoint<T>& sp, const SpecularOptions& spec) {
-  return shade_disk_bracket(light, sp, spec).estimate;
+  return shade_disk(prepare_disk_light(light), sp, spec);
 }
 
 }  // namespace vlit

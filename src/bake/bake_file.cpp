@@ -38,6 +38,7 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   request.shade.with_specular = options.specular_eye.has_value();
   request.shade.specular = options.specular;
   request.eye = options.specular_eye;
+  request.float_batch = options.float_batch;
   request.shadows = options.shadows;
   request.progress = options.progress;
   request.cancel = options.cancel;

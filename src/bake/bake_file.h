@@ -15,6 +15,7 @@ namespace vlit {
 struct BakeFileOptions {
   std::string lights_path;        // LIGHTS.json, may be empty
   bool use_file_lights = true;    // keep the asset's KHR_lights_punctual lights
+  bool float_batch = true;        // diffuse in the float SIMD batch kernels where they apply (LightingRequest)
   bool shadows = false;           // --shadows on (docs/shadows.md)
   BakeOptions encode;             // target attribute, format, exposure, unlit
   // Bake specular for this eye (world space), folded into the stored multiplier

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "bake/batch_lighting.h"
 #include "scene/material.h"
 #include "shadow/shadowed_vertices.h"
 
@@ -47,6 +48,7 @@ ScenePlan plan_lighting(const Scene& scene, const LightingRequest& request) {
   PlanOptions options;
   options.shade = request.shade;
   options.has_eye = request.eye.has_value();
+  options.float_batch = request.float_batch;
   options.shadows = request.shadows;
   return make_scene_plan(scene, options);
 }
@@ -64,6 +66,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
   constexpr std::size_t kChunk = 1 << 14;  // progress and cancellation granularity
   std::vector<Vec3d> diffuse(kChunk), specular(options.with_specular ? kChunk : 0);
   std::vector<ShadingPoint<double>> points(kChunk);  // per vertex, computed once for all lights
+  BatchChunk batch;                                   // the same points as arrays, for batch kernels
+  std::vector<int> batch_lights;
   std::optional<OccluderBvh> occluders;  // built only when the plan shadows some pair
   if (plan.needs_occluders) occluders.emplace(occluders_of(scene));
   for (std::size_t pi = 0; pi < scene.primitives.size(); ++pi) {
@@ -84,12 +88,20 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         for (long v = 0; v < count; ++v)
           points[v] = make_shading_point(prim.positions[begin + v], prim.normals[begin + v], eye, shininess);
       }
-      for (std::size_t k = 0; k < plan.lights_of_primitive[pi].size(); ++k) {
-        const PreparedLight<double>& light = plan.lights[plan.lights_of_primitive[pi][k]];
+      // Shadowed pairs take the shadowed path; of the others, lights with a float batch kernel
+      // first, all in one parallel region; then the rest.
+      const std::vector<int>& lights_here = plan.lights_of_primitive[pi];
+      auto shadowed = [&](std::size_t k) { return occluders && plan.shadowed_of_primitive[pi][k]; };
+      batch_lights.clear();
+      for (std::size_t k = 0; k < lights_here.size(); ++k)
+        if (!shadowed(k) && plan.batch_of_light[lights_here[k]].light) batch_lights.push_back(lights_here[k]);
+      accumulate_batch_lights(plan, batch_lights, batch, points.data(), count, diffuse.data());
+      for (std::size_t k = 0; k < lights_here.size(); ++k) {
+        const PreparedLight<double>& light = plan.lights[lights_here[k]];
         Vec3d* spec_out = options.with_specular ? specular.data() : nullptr;
-        if (occluders && plan.shadowed_of_primitive[pi][k])
+        if (shadowed(k))
           accumulate_light_shadowed(light, options, points.data(), count, diffuse.data(), spec_out, *occluders);
-        else
+        else if (!plan.batch_of_light[lights_here[k]].light)
           accumulate_light(light, options, points.data(), count, diffuse.data(), spec_out);
       }
       for (std::size_t v = begin; v < end; ++v) {

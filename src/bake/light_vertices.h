@@ -22,6 +22,9 @@ struct VertexLight {
 struct LightingRequest {
   ShadeOptions shade;
   std::optional<Vec3d> eye;  // specular is evaluated only with an eye
+  // Diffuse-only lights use the float SIMD batch kernels where the plan finds one (bake/batch_lighting.h);
+  // false keeps every light on the scalar double kernels.
+  bool float_batch = true;
   bool shadows = false;      // --shadows: lights hidden by the scene's triangles (docs/shadows.md)
   // Called from the calling thread with (vertices done, vertices total); may be empty.
   std::function<void(std::size_t, std::size_t)> progress;
@@ -33,8 +36,8 @@ struct LightingRequest {
 ScenePlan plan_lighting(const Scene& scene, const LightingRequest& request);
 
 // One VertexLight per scene primitive, in the same order. Deterministic: the result does not
-// depend on the number of threads (each vertex is computed independently, lights summed in the
-// plan's order).
+// depend on the number of threads (each vertex is computed independently, lights summed in a fixed
+// order: the plan's lights with a float batch kernel, then the others, each group in the plan's order).
 std::vector<VertexLight> light_scene_vertices(const Scene& scene, const LightingRequest& request);
 std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePlan& plan, const LightingRequest& request);
 

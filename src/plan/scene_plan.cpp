@@ -114,6 +114,8 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
       throw InputError(l.name, e.what());
     }
     plan.source_of_light.push_back(li);
+    if (options.float_batch) plan.batch_of_light.push_back(batch_kernel_for(plan.lights.back(), plan.shade));
+    else plan.batch_of_light.push_back({std::nullopt, "double precision requested"});
     kept.push_back(&l);
   }
 
@@ -155,7 +157,10 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     for (std::size_t p = 0; p < scene.primitives.size(); ++p)
       for (int k : plan.lights_of_primitive[p])
         if (static_cast<std::size_t>(k) == i) vertices += scene.primitives[p].positions.size();
-    s << "plan: light " << l.name << ": " << diffuse_kernel(l, plan.shade) << ", " << vertices << " vertices\n";
+    const BatchChoice& batch = plan.batch_of_light[i];
+    s << "plan: light " << l.name << ": " << diffuse_kernel(l, plan.shade) << ", " << vertices << " vertices, ";
+    if (batch.light) s << "float SIMD batch (" << batch_instruction_set() << ")\n";
+    else s << "scalar double (" << batch.reason << ")\n";
   }
   for (const std::string& line : plan.skipped) s << "plan: skipped " << line << "\n";
   return s.str();

@@ -6,7 +6,8 @@
 //   misses the primitive's bounding sphere, a light whose glTF range ends before the box, a light
 //   made from a primitive's own emissive triangles and that primitive (it does not light itself);
 // - specular work is planned only when an eye is given and asked for;
-// - every per-light constant is computed once (PreparedLight);
+// - every per-light constant is computed once (PreparedLight, and BatchLight for the lights
+//   whose diffuse-only work runs in a float SIMD batch kernel);
 // - shadows (when asked for) only on the pairs where some triangle may lie between the primitive
 //   and the light: boxes prove the rest unoccluded, and a planar primitive cannot shadow itself.
 // describe() prints the plan for `--explain`.
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "shading/batch_kernels.h"
 #include "shading/prepared_light.h"
 
 namespace vlit {
@@ -23,12 +25,14 @@ namespace vlit {
 struct PlanOptions {
   ShadeOptions shade;
   bool has_eye = false;
+  bool float_batch = true;  // let diffuse-only lights use the float SIMD batch kernels
   bool shadows = false;  // --shadows on: lights with "shadows": true are hidden by the scene's triangles
 };
 
 struct ScenePlan {
   std::vector<PreparedLight<double>> lights;          // the lights that can contribute somewhere
   std::vector<std::size_t> source_of_light;          // parallel to lights: index into Scene::lights
+  std::vector<BatchChoice> batch_of_light;            // parallel to lights: float batch kernel, or why not
   std::vector<std::vector<int>> lights_of_primitive;  // per scene primitive: indices into lights
   // Parallel to lights_of_primitive: 1 where the pair is evaluated with shadows (docs/shadows.md).
   // A pair gets shadows only if shadows are on, the light casts them, and some triangle may lie

@@ -29,7 +29,7 @@ struct ShadeOptions {
 template <class T>
 struct PreparedLight {
   using Kernel = std::variant<PointLight<T>, DirectionalLight<T>, SpotLight<T>, LinearLight<T>, PreparedAreaLight<T>,
-                              DiskLight<T>>;
+                              PreparedDiskLight<T>>;
   LightType type = LightType::kPoint;
   Vec3<T> radiance{1, 1, 1};  // colour x intensity
   Kernel kernel;
@@ -79,7 +79,8 @@ PreparedLight<T> prepare_light(const LightSource& light) {
       break;
     }
     case LightType::kDisk:
-      out.kernel = DiskLight<T>{v(light.center), v(light.normal), T(light.radius), light.two_sided};
+      // per-light constants (frame, specular polygons), once (throws if invalid)
+      out.kernel = prepare_disk_light(DiskLight<T>{v(light.center), v(light.normal), T(light.radius), light.two_sided});
       break;
   }
   return out;

@@ -149,11 +149,15 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   return r;
 }
 
-// The regular 64-gon of the disk's area (vertex radius R sqrt(2 pi / (n sin(2 pi / n)))).
-PreparedAreaLight<double> equal_area_polygon(const DiskLight<double>& disk) {
-  constexpr int n = kMaxAreaVertices;
-  const double radius = disk.radius * std::sqrt(2 * M_PI / (n * std::sin(2 * M_PI / n)));
-  return disk_polygon(disk, n, radius);
+// The regular n-gon of the disk's area: its inscribed n-gon scaled by sqrt(2 pi / (n sin(2 pi / n))).
+PreparedAreaLight<double> equal_area_polygon(const PreparedDiskLight<double>& disk) {
+  PreparedAreaLight<double> polygon = disk.inscribed;
+  const int n = polygon.count;
+  const double scale = std::sqrt(2 * M_PI / (n * std::sin(2 * M_PI / n)));
+  for (int i = 0; i < n; ++i) polygon.d[i] = polygon.d[i] * scale;
+  polygon.radius *= scale;
+  polygon.area = M_PI * disk.radius * disk.radius;
+  return polygon;
 }
 
 // Reach of a directional light's shadow ray: past every occluder.
@@ -173,7 +177,7 @@ Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& s
   } else if constexpr (std::is_same_v<K, PreparedAreaLight<double>>) {
     return shade_area_shadowed(k, sp, options, occluders,
                                [&] { return shade_area(k, sp, effective_specular(options)); });
-  } else if constexpr (std::is_same_v<K, DiskLight<double>>) {
+  } else if constexpr (std::is_same_v<K, PreparedDiskLight<double>>) {
     return shade_area_shadowed(equal_area_polygon(k), sp, options, occluders,
                                [&] { return shade_kernel<double>(k, sp, options); });
   } else {
@@ -199,7 +203,7 @@ template Response<double> shade_kernel_shadowed(const LinearLight<double>&, cons
                                                 const ShadeOptions&, const OccluderBvh&);
 template Response<double> shade_kernel_shadowed(const PreparedAreaLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&);
-template Response<double> shade_kernel_shadowed(const DiskLight<double>&, const ShadingPoint<double>&,
+template Response<double> shade_kernel_shadowed(const PreparedDiskLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&);
 
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,

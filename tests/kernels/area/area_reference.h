@@ -63,7 +63,8 @@ inline bool inside_triangle_2d(const RefPoint2& a, const RefPoint2& b, const Ref
 
 inline LD reference_integral(const RefQuery& q) {
   using boost::math::quadrature::gauss_kronrod;
-  const V3 P = static_cast<V3>(q.p), N = static_cast<V3>(q.n), Rv = static_cast<V3>(q.rv);
+  const V3 P = static_cast<V3>(q.p), N = static_cast<V3>(q.n);
+  const V3 Rv = normalize(static_cast<V3>(q.rv));  // the lobe's Rv is a unit vector by definition
   const LD m = q.m;
   LD total = 0;
   for (const auto& piece_d : q.pieces) {
@@ -140,7 +141,12 @@ inline LD reference_integral(const RefQuery& q) {
         area2 += a.x * b.y - a.y * b.x;
         for (const auto& v : poly) diam2 = std::max(diam2, (v.x - a.x) * (v.x - a.x) + (v.y - a.y) * (v.y - a.y));
       }
-      if (std::abs(area2) / 2 < LD(1e-3) * diam2 && !(center.x == foot.x && center.y == foot.y)) {
+      // Also when the foot is inside a thin piece but P is far compared with the piece's length:
+      // polar coordinates about the foot see the long edges edge-on (narrow angular spikes of
+      // width ~ thickness / length), which the angular Gauss-Kronrod cannot resolve ("thin 1e-6",
+      // P at height 0.5 over a 1 x 1e-6 strip: 1.9e-5 off before, against the exact 1D form).
+      const bool far_from_thin = height > LD(1e-2) * std::sqrt(diam2);
+      if (std::abs(area2) / 2 < LD(1e-3) * diam2 && (!(center.x == foot.x && center.y == foot.y) || far_from_thin)) {
         const V3 v0_from_p = (o - P) + e1 * poly[0].x + e2 * poly[0].y;
         auto f = [&](LD dx, LD dy) -> LD {
           const V3 a = v0_from_p + e1 * dx + e2 * dy;

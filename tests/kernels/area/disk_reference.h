@@ -1,6 +1,7 @@
 // Independent long-double reference for the disk light (diffuse and exact specular), used by the
-// accuracy report: Boost.Math adaptive Gauss-Kronrod over the disk in polar coordinates (rho, phi)
-// about its centre, not through polygons like shaders_cpu/disk_light.h.
+// disk tests and the accuracy report: Boost.Math adaptive Gauss-Kronrod over the disk in polar
+// coordinates (rho, phi) about its centre, neither through polygons nor through the contour
+// integral of shaders_cpu/disk_diffuse_contour.h.
 //
 // For a fixed phi the horizon N.(x - P) = 0 and the lobe's zero Rv.(x - P) = 0 are linear in rho:
 // the radial integral is split at their roots, so max(0, .) never puts a kink inside a piece, and
@@ -19,7 +20,7 @@
 
 #include "core/vec3.h"
 
-namespace vlit::bench {
+namespace vlit::test {
 
 struct DiskQuery {
   Vec3d center, normal;
@@ -47,7 +48,8 @@ long double gk_bisect(const F& f, long double a, long double b, long double rel_
 inline long double disk_reference(const DiskQuery& q) {
   using LD = long double;
   using V = Vec3<LD>;
-  const V c = static_cast<V>(q.center), p = static_cast<V>(q.p), n = static_cast<V>(q.n), rv = static_cast<V>(q.rv);
+  const V c = static_cast<V>(q.center), p = static_cast<V>(q.p), n = static_cast<V>(q.n);
+  const V rv = normalize(static_cast<V>(q.rv));  // the lobe's Rv is a unit vector by definition
   V nl = static_cast<V>(q.normal);
   nl = nl / std::sqrt(dot(nl, nl));
   const LD big_r = q.radius, m = q.m;
@@ -142,4 +144,4 @@ inline long double disk_reference(const DiskQuery& q) {
   return total;
 }
 
-}  // namespace vlit::bench
+}  // namespace vlit::test

@@ -1,0 +1,282 @@
+// Area and disk lights: evaluations per second of each method, against the cheapest Gauss product
+// rule of equal accuracy, one core, one run of this program.
+//
+//   cmake --build build/release --target area_light_bench -j2 && ./build/release/bench/area_light_bench [--quick]
+//
+// Shapes: triangle, quad, regular 8-gon, disk (size 0.3..1.2 at distance 1..3 from P, emitting
+// toward P, N toward the light so the whole light is above the horizon: the quadrature's best case,
+// no kink of max(0, .) inside the light). For each shape 128 seeded cases; errors against the
+// long-double Boost.Math references (tests/kernels/area/area_reference.h, disk_reference.h).
+// Diffuse: the closed forms (contour, eq. 9; the disk's analytic contour) against a Gauss-Legendre
+// product rule over the light (polygons: fan triangles, Duffy-collapsed n x n rule; disk: polar
+// n x 2n rule), whose order n is raised until its max error over the cases is <= 10x the closed
+// form's (both then at rounding level; or n = 64). Specular: the peak, the neighbourhood (K = 4) and the exact lobe integral at tol
+// 1e-6 and 1e-9, against the product rule of the lobe integrand raised to the exact method's error.
+// Times: ns per evaluation (per-light preparation excluded, as in the bake loop), best of 3 passes
+// over the cases, each pass repeated until it takes >= 50 ms; single thread.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "kernels/area/area_reference.h"
+#include "kernels/area/disk_reference.h"
+
+#include "accuracy_methods.h"
+#include "area_light.h"
+#include "disk_light.h"
+
+namespace {
+
+using namespace vlit;
+using LD = long double;
+
+struct Case {
+  std::vector<Vec3d> polygon;  // empty for a disk
+  DiskLight<double> disk;
+  PreparedAreaLight<double> prepared;
+  PreparedDiskLight<double> prepared_disk;
+  ShadingPoint<double> sp;
+  LD ref_diffuse = 0, ref_specular = 0;
+};
+
+Vec3d random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  for (;;) {
+    const Vec3d v{g(rng), g(rng), g(rng)};
+    if (length(v) > 1e-3) return normalize(v);
+  }
+}
+
+// sides: 3, 4, 8, or 0 for a disk.
+std::vector<Case> make_cases(int sides, int count) {
+  std::mt19937_64 rng(1000 + sides);
+  std::uniform_real_distribution<double> u01(0, 1);
+  std::vector<Case> out;
+  while (int(out.size()) < count) {
+    Case c;
+    const Vec3d p = random_unit(rng) * u01(rng);
+    const Vec3d to_light = random_unit(rng);
+    const Vec3d center = p + to_light * (1 + 2 * u01(rng));
+    const Vec3d normal = normalize(-to_light + random_unit(rng) * 0.5);  // emits toward P
+    const double size = 0.3 + 0.9 * u01(rng);
+    const Vec3d helper = std::abs(normal.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    const Vec3d e1 = normalize(cross(helper, normal)), e2 = cross(normal, e1);
+    const Vec3d n = normalize(to_light + random_unit(rng) * 0.3);
+    const Vec3d rv = normalize(to_light + random_unit(rng) * 0.3);
+    const double m = std::round(std::pow(10.0, 3 * u01(rng)));
+    c.sp = {p, n, rv, m};
+    if (sides == 0) {
+      c.disk = {center, normal, size};
+      c.prepared_disk = prepare_disk_light(c.disk);
+    } else {
+      const double phase = 2 * M_PI * u01(rng);
+      for (int k = 0; k < sides; ++k) {
+        const double a = phase + 2 * M_PI * k / sides;
+        c.polygon.push_back(center + e1 * (size * std::cos(a)) + e2 * (size * std::sin(a)));
+      }
+      AreaLight<double> l;
+      l.polygon = c.polygon;
+      c.prepared = prepare_area_light(l);
+    }
+    // Whole light above the horizon of P (the product rule's best case).
+    bool above = true;
+    if (sides == 0) {
+      const double nd = dot(n, center - p), mu = length(n - normal * dot(n, normal));
+      above = nd > size * mu;
+    } else {
+      for (const Vec3d& q : c.polygon) above = above && dot(n, q - p) > 0;
+    }
+    if (!above) continue;
+    if (sides == 0) {
+      test::DiskQuery q;
+      q.center = center; q.normal = normal; q.radius = size; q.p = p; q.n = n; q.rv = rv; q.m = m;
+      c.ref_diffuse = test::disk_reference(q);
+      q.specular = true;
+      c.ref_specular = test::disk_reference(q);
+    } else {
+      test::RefQuery q;
+      q.pieces = {c.polygon};
+      q.p = p; q.n = n; q.rv = rv; q.m = m;
+      q.tolerance = 1e-13L;
+      c.ref_diffuse = test::reference_integral(q);
+      q.specular = true;
+      c.ref_specular = test::reference_integral(q);
+    }
+    out.push_back(c);
+  }
+  return out;
+}
+
+// Gauss-Legendre product rules of order n (nodes on [0, 1]).
+struct Rule {
+  std::vector<double> x, w;
+};
+Rule unit_rule(int n) {
+  const bench::FixedRule r = bench::make_fixed_rule(n);
+  Rule u;
+  for (std::size_t i = 0; i < r.x.size(); ++i) { u.x.push_back((r.x[i] + 1) / 2); u.w.push_back(r.w[i] / 2); }
+  return u;
+}
+
+// Integrand at the light point x: diffuse cos(theta) cos(theta_l) / r^2, specular lobe cos(theta_l) / r^2.
+double integrand(const Vec3d& x, const Vec3d& light_normal, const ShadingPoint<double>& sp, bool specular) {
+  const Vec3d a = x - sp.p;
+  const double r2 = dot(a, a), r = std::sqrt(r2);
+  const double cos_l = -dot(light_normal, a) / r;
+  const double cos_n = dot(sp.n, a) / r;
+  if (!(cos_l > 0) || !(cos_n > 0)) return 0;
+  if (!specular) return cos_n * cos_l / r2;
+  const double c = dot(sp.rv, a) / r;
+  return (c > 0 ? std::pow(c, sp.shininess) : 0.0) * cos_l / r2;
+}
+
+double product_rule(const Case& c, const Rule& rule, bool specular) {
+  double sum = 0;
+  const int n = int(rule.x.size());
+  if (c.polygon.empty()) {  // polar over the disk: n radial x 2n angular (midpoint in angle: periodic)
+    const Vec3d nl = normalize(c.disk.normal);
+    const Vec3d helper = std::abs(nl.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    const Vec3d e1 = normalize(cross(helper, nl)), e2 = cross(nl, e1);
+    const int na = 2 * n;
+    for (int j = 0; j < na; ++j) {
+      const double phi = 2 * M_PI * (j + 0.5) / na;
+      const Vec3d dir = e1 * std::cos(phi) + e2 * std::sin(phi);
+      for (int i = 0; i < n; ++i) {
+        const double rho = rule.x[i] * c.disk.radius;
+        sum += rule.w[i] * rho * integrand(c.disk.center + dir * rho, nl, c.sp, specular);
+      }
+    }
+    return sum * c.disk.radius * 2 * M_PI / na;
+  }
+  const Vec3d nl = c.prepared.normal;
+  const Vec3d& q0 = c.polygon[0];
+  for (std::size_t t = 1; t + 1 < c.polygon.size(); ++t) {
+    const Vec3d e1 = c.polygon[t] - q0, e2 = c.polygon[t + 1] - q0;
+    const double jac = length(cross(e1, e2));
+    double tri = 0;
+    for (int i = 0; i < n; ++i) {
+      const double s = rule.x[i];
+      double inner = 0;
+      for (int j = 0; j < n; ++j) inner += rule.w[j] * integrand(q0 + (e1 + (e2 - e1) * rule.x[j]) * s, nl, c.sp, specular);
+      tri += rule.w[i] * s * inner;
+    }
+    sum += tri * jac;
+  }
+  return sum;
+}
+
+double rel_err(double v, LD ref) { return double(std::fabs(LD(v) - ref) / std::max(std::fabs(ref), LD(1e-300))); }
+
+double g_sink = 0;
+
+// ns per evaluation: best of 3 passes, each repeated until >= 50 ms.
+double time_ns(const std::vector<Case>& cases, const std::function<double(const Case&)>& f) {
+  double best = INFINITY;
+  for (int pass = 0; pass < 3; ++pass) {
+    int reps = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    double elapsed = 0;
+    do {
+      for (const Case& c : cases) g_sink += f(c);
+      ++reps;
+      elapsed = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+    } while (elapsed < 5e7);
+    best = std::min(best, elapsed / (double(reps) * double(cases.size())));
+  }
+  return best;
+}
+
+double max_error(const std::vector<Case>& cases, const std::function<double(const Case&)>& f, bool specular) {
+  double worst = 0;
+  for (const Case& c : cases) worst = std::max(worst, rel_err(f(c), specular ? c.ref_specular : c.ref_diffuse));
+  return worst;
+}
+
+// Smallest product-rule order whose max error is <= target (or 64).
+int matching_order(const std::vector<Case>& cases, double target, bool specular, double* err_out) {
+  for (int n = 1; n <= 64; n += (n < 16 ? 1 : 4)) {
+    const Rule rule = unit_rule(n);
+    const double err = max_error(cases, [&](const Case& c) { return product_rule(c, rule, specular); }, specular);
+    if (err <= target || n == 64) { *err_out = err; return n; }
+  }
+  return 64;
+}
+
+std::string ratio(double r) {
+  char b[32];
+  std::snprintf(b, sizeof b, r < 10 ? "%.1fx" : "%.0fx", r);
+  return b;
+}
+
+void row(const char* shape, const char* method, double err, double ns, double baseline_ns, const std::string& note) {
+  char rate[32];
+  if (ns < 1e3) std::snprintf(rate, sizeof rate, "%.2f M", 1e3 / ns);
+  else std::snprintf(rate, sizeof rate, "%.1f k", 1e6 / ns);
+  std::printf("| %s | %s | %.1e | %.0f | %s | %s | %s |\n", shape, method, err, ns, rate,
+              baseline_ns > 0 ? ratio(baseline_ns / ns).c_str() : "—", note.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const int count = quick ? 4 : 128;
+  std::printf("| shape | method | max rel. error | ns/eval | evals/s | speed-up vs matching product rule | product rule |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  const struct { int sides; const char* name; } shapes[] = {{3, "triangle"}, {4, "quad"}, {8, "8-gon"}, {0, "disk"}};
+  for (const auto& shape : shapes) {
+    std::fprintf(stderr, "%s: references for %d cases ...\n", shape.name, count);
+    const std::vector<Case> cases = make_cases(shape.sides, count);
+    const bool disk = shape.sides == 0;
+    auto shade = [&](SpecularMethod method, double tol, int k) {
+      SpecularOptions o;
+      o.method = method;
+      o.exact_tolerance = tol;
+      o.neighborhood_samples = k;
+      return [o, disk](const Case& c) {
+        const Response<double> r = disk ? shade_disk(c.prepared_disk, c.sp, o) : shade_area(c.prepared, c.sp, o);
+        return o.method == SpecularMethod::kNone ? r.diffuse : r.specular;
+      };
+    };
+    // Diffuse
+    const auto closed = shade(SpecularMethod::kNone, 0, 0);
+    const double closed_err = max_error(cases, closed, false);
+    double gl_err = 0;
+    const int order = matching_order(cases, 10 * closed_err, false, &gl_err);  // both at rounding level
+    const Rule rule = unit_rule(order);
+    const double gl_ns = time_ns(cases, [&](const Case& c) { return product_rule(c, rule, false); });
+    const double closed_ns = time_ns(cases, closed);
+    row(shape.name, disk ? "diffuse, analytic contour" : "diffuse, contour (eq. 9)", closed_err, closed_ns, gl_ns, "");
+    const std::string rule_name = disk ? "polar " + std::to_string(order) + "x" + std::to_string(2 * order)
+                                       : std::to_string(order) + "x" + std::to_string(order) + " per fan triangle";
+    row(shape.name, ("diffuse, Gauss product " + rule_name).c_str(), gl_err, gl_ns, 0,
+        order == 64 && gl_err > 10 * closed_err ? "order cap 64 reached" : "");
+    // Specular
+    const auto peak = shade(SpecularMethod::kPeak, 0, 0);
+    row(shape.name, "specular, peak (not the integral)", max_error(cases, peak, true), time_ns(cases, peak), 0, "");
+    const auto nb = shade(SpecularMethod::kNeighborhood, 0, 4);
+    row(shape.name, "specular, neighbourhood K=4 (not the integral)", max_error(cases, nb, true), time_ns(cases, nb), 0, "");
+    for (double tol : {1e-6, 1e-9}) {
+      const auto ex = shade(SpecularMethod::kExact, tol, 0);
+      const double ex_err = max_error(cases, ex, true);
+      double sgl_err = 0;
+      const int sorder = matching_order(cases, ex_err, true, &sgl_err);
+      const Rule srule = unit_rule(sorder);
+      const double sgl_ns = time_ns(cases, [&](const Case& c) { return product_rule(c, srule, true); });
+      char name[64];
+      std::snprintf(name, sizeof name, "specular, exact tol %g", tol);
+      row(shape.name, name, ex_err, time_ns(cases, ex), sgl_ns, "");
+      const std::string sname = "specular, Gauss product " + (disk ? "polar " + std::to_string(sorder) + "x" + std::to_string(2 * sorder)
+                                                                     : std::to_string(sorder) + "x" + std::to_string(sorder));
+      row(shape.name, sname.c_str(), sgl_err, sgl_ns, 0, sorder == 64 && sgl_err > ex_err ? "order cap 64 reached" : "");
+    }
+  }
+  std::fprintf(stderr, "(checksum %g)\n", g_sink);
+  return 0;
+}

@@ -1,0 +1,40 @@
+// Structure-of-arrays shading points for the float batch kernels (shaders_cpu/batch/).
+//
+// A batch kernel evaluates one light at many points: lane v of every array is one surface point.
+// Positions stay in double so that every kernel forms light-minus-point differences in double
+// before rounding them to float: a mesh far from the origin (offset 1e4) loses nothing to
+// cancellation, exactly as the scalar kernels' float instantiations (conventions.h). Normals are
+// unit float vectors. Kernels read lanes [begin, end) and write one float per lane.
+//
+// Determinism: the batch kernels use only +, -, *, /, sqrt, min, max and selects, each correctly
+// rounded in IEEE single or double precision, and no fused multiply-add contraction (the file that
+// compiles them, src/shading/batch_kernels.cpp, is built with -ffp-contract=off: GCC contracts by
+// default, differently in a vector body and its remainder). A lane's result is therefore the same
+// whether it is computed in a 16-wide AVX-512 vector, an 8-wide AVX2 vector or the scalar
+// remainder loop: the output does not depend on how vertices are split between threads.
+// Lane code combines conditions with the non-short-circuit & and | so that the compiler sees
+// plain masks (a short-circuit && between a float and a double comparison stops GCC 12).
+#pragma once
+
+#include <cstdint>
+
+namespace vlit {
+
+struct BatchPoints {
+  const double* px = nullptr;
+  const double* py = nullptr;
+  const double* pz = nullptr;
+  const float* nx = nullptr;  // unit normal
+  const float* ny = nullptr;
+  const float* nz = nullptr;
+};
+
+// Per-lane outputs: the diffuse response for unit intensity (kd = 1, conventions.h) and a flag
+// set when the lane is outside the kernel's float accuracy domain (the caller recomputes flagged
+// lanes with the scalar double kernel; each kernel file says when it flags).
+struct BatchOutput {
+  float* diffuse = nullptr;
+  std::uint8_t* stiff = nullptr;
+};
+
+}  // namespace vlit

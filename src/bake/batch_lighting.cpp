@@ -1,0 +1,53 @@
+#include "bake/batch_lighting.h"
+
+#include <algorithm>
+
+namespace vlit {
+
+void BatchChunk::resize(long count) {
+  count_ = count;
+  const std::size_t n = static_cast<std::size_t>(count);
+  if (px_.size() >= n) return;
+  for (auto* v : {&px_, &py_, &pz_}) v->resize(n);
+  for (auto* v : {&nx_, &ny_, &nz_, &response_}) v->resize(n);
+  stiff_.resize(n);
+}
+
+void BatchChunk::fill(const ShadingPoint<double>* points, long begin, long end) {
+  for (long v = begin; v < end; ++v) {
+    const ShadingPoint<double>& sp = points[v];
+    px_[v] = sp.p.x; py_[v] = sp.p.y; pz_[v] = sp.p.z;
+    nx_[v] = static_cast<float>(sp.n.x); ny_[v] = static_cast<float>(sp.n.y); nz_[v] = static_cast<float>(sp.n.z);
+  }
+}
+
+void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,
+                             const ShadingPoint<double>* points, long count, Vec3d* diffuse) {
+  if (lights.empty() || count <= 0) return;
+  constexpr long kBlock = 256;  // lanes per task: whole blocks, so the split never changes a lane's code path
+  const long blocks = (count + kBlock - 1) / kBlock;
+  chunk.resize(count);
+  const BatchPoints pts = chunk.points();
+  const BatchOutput out = chunk.scratch();
+#pragma omp parallel
+  {
+    // The same static schedule in every loop: a thread fills exactly the blocks it then lights.
+#pragma omp for schedule(static) nowait
+    for (long b = 0; b < blocks; ++b) chunk.fill(points, b * kBlock, std::min(count, (b + 1) * kBlock));
+    for (int li : lights) {
+      const PreparedLight<double>& light = plan.lights[li];
+      const BatchLight& batch = *plan.batch_of_light[li].light;
+#pragma omp for schedule(static) nowait
+      for (long b = 0; b < blocks; ++b) {
+        const long begin = b * kBlock, end = std::min(count, begin + kBlock);
+        evaluate_diffuse_batch(batch, pts, begin, end, out);
+        for (long v = begin; v < end; ++v) {
+          const double id = out.stiff[v] ? shade(light, points[v], plan.shade).diffuse : static_cast<double>(out.diffuse[v]);
+          diffuse[v] += light.radiance * id;
+        }
+      }
+    }
+  }
+}
+
+}  // namespace vlit

@@ -1,0 +1,41 @@
+// The bake's float batch path: the diffuse of the lights the scene plan gives a float batch kernel
+// (shading/batch_kernels.h), over a chunk of vertices; the lanes a kernel flags as stiff are
+// recomputed with the scalar double kernel. Used by light_vertices.cpp; everything else stays on
+// the scalar path there.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "plan/scene_plan.h"
+
+namespace vlit {
+
+// Scratch for one chunk of shading points as structure of arrays, reused from chunk to chunk.
+class BatchChunk {
+ public:
+  void resize(long count);
+  // Copies points [begin, end) (position, unit normal) into the arrays.
+  void fill(const ShadingPoint<double>* points, long begin, long end);
+  BatchPoints points() const { return {px_.data(), py_.data(), pz_.data(), nx_.data(), ny_.data(), nz_.data()}; }
+  BatchOutput scratch() { return {response_.data(), stiff_.data()}; }
+  long count() const { return count_; }
+
+ private:
+  long count_ = 0;
+  std::vector<double> px_, py_, pz_;
+  std::vector<float> nx_, ny_, nz_;
+  std::vector<float> response_;
+  std::vector<std::uint8_t> stiff_;
+};
+
+// diffuse[v] += radiance * Id(v) for every vertex of the chunk and every light of `lights`
+// (indices into plan.lights, each with plan.batch_of_light[i].light set), in that order, all
+// cores, in one parallel region: every thread takes the same blocks of vertices for every light
+// (static schedule), so there is no barrier between lights, which matters on a loaded machine.
+// The result for a vertex does not depend on the number of threads: blocks are whole and a lane's
+// float result is the same in any vector width (shaders_cpu/batch/batch_points.h).
+void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,
+                             const ShadingPoint<double>* points, long count, Vec3d* diffuse);
+
+}  // namespace vlit

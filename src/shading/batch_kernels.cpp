@@ -1,0 +1,114 @@
+#include "shading/batch_kernels.h"
+
+#include <cmath>
+
+namespace vlit {
+namespace {
+
+bool is_integer_falloff(double n) { return n == 0 || n == 1 || n == 2 || n == 3; }
+
+// Convex and counter-clockwise about the emitting normal: every corner turns the same way.
+bool is_convex(const PreparedAreaLight<double>& a) {
+  for (int i = 0; i < a.count; ++i) {
+    const Vec3d& p = a.d[i];
+    const Vec3d& q = a.d[(i + 1) % a.count];
+    const Vec3d& r = a.d[(i + 2) % a.count];
+    if (dot(cross(q - p, r - q), a.normal) < -1e-12 * a.radius * a.radius) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOptions& options) {
+  BatchChoice c;
+  if (options.with_specular) {
+    c.reason = "specular needed";
+    return c;
+  }
+  std::visit(
+      [&](const auto& k) {
+        using K = std::decay_t<decltype(k)>;
+        if constexpr (std::is_same_v<K, PointLight<double>> || std::is_same_v<K, SpotLight<double>>) {
+          if (!is_integer_falloff(k.falloff)) {
+            c.reason = "non-integer falloff";
+            return;
+          }
+          PunctualBatchLight b;
+          b.kind = std::is_same_v<K, SpotLight<double>> ? PunctualBatchLight::Kind::kSpot : PunctualBatchLight::Kind::kPoint;
+          b.position[0] = k.position.x; b.position[1] = k.position.y; b.position[2] = k.position.z;
+          b.falloff = int(k.falloff);
+          if constexpr (std::is_same_v<K, SpotLight<double>>) {
+            b.direction[0] = k.direction.x; b.direction[1] = k.direction.y; b.direction[2] = k.direction.z;
+            b.cos_outer = k.cos_outer;
+            b.inv_cone_width = 1 / std::max(k.cos_inner - k.cos_outer, 1e-6);
+          }
+          if (light.range > 0) b.inv_range2 = 1 / (light.range * light.range);
+          c.light = b;
+        } else if constexpr (std::is_same_v<K, DirectionalLight<double>>) {
+          PunctualBatchLight b;
+          b.kind = PunctualBatchLight::Kind::kDirectional;
+          b.direction[0] = k.direction.x; b.direction[1] = k.direction.y; b.direction[2] = k.direction.z;
+          c.light = b;
+        } else if constexpr (std::is_same_v<K, LinearLight<double>>) {
+          const Vec3d ld = k.q1 - k.q0;
+          const double len = length(ld);
+          if (options.linear.force_quadrature) c.reason = "quadrature forced";
+          else if (k.falloff != 2 && k.falloff != 3) c.reason = "falloff other than 2 or 3";
+          else if (!(len > 0) || !std::isfinite(len)) c.reason = "zero-length segment";
+          if (!c.reason.empty()) return;
+          LinearBatchLight b;
+          b.q0[0] = k.q0.x; b.q0[1] = k.q0.y; b.q0[2] = k.q0.z;
+          b.q1[0] = k.q1.x; b.q1[1] = k.q1.y; b.q1[2] = k.q1.z;
+          b.u[0] = ld.x / len; b.u[1] = ld.y / len; b.u[2] = ld.z / len;
+          b.length = len;
+          b.inv_length = float(1 / len);
+          b.falloff = int(k.falloff);
+          c.light = b;
+        } else if constexpr (std::is_same_v<K, PreparedAreaLight<double>>) {
+          if (k.count > kAreaBatchMaxVertices) c.reason = "too many vertices";
+          else if (!is_convex(k)) c.reason = "non-convex polygon";
+          if (!c.reason.empty()) return;
+          AreaBatchLight b{};
+          b.center[0] = k.center.x; b.center[1] = k.center.y; b.center[2] = k.center.z;
+          b.normal[0] = k.normal.x; b.normal[1] = k.normal.y; b.normal[2] = k.normal.z;
+          for (int i = 0; i < k.count; ++i) {
+            b.d[i][0] = float(k.d[i].x); b.d[i][1] = float(k.d[i].y); b.d[i][2] = float(k.d[i].z);
+          }
+          b.count = k.count;
+          b.radius = float(k.radius);
+          b.two_sided = k.two_sided;
+          c.light = b;
+        } else {
+          c.reason = "no batch kernel for this model";
+        }
+      },
+      light.kernel);
+  return c;
+}
+
+// GCC function multiversioning; other compilers (clang in the fuzz preset) get one baseline copy.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define VLIT_BATCH_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"), flatten))
+#else
+#define VLIT_BATCH_CLONES
+#endif
+
+VLIT_BATCH_CLONES
+void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, long begin, long end,
+                            const BatchOutput& out) {
+  if (const auto* p = std::get_if<PunctualBatchLight>(&light)) punctual_diffuse_batch(*p, points, begin, end, out);
+  else if (const auto* l = std::get_if<LinearBatchLight>(&light)) linear_diffuse_batch(*l, points, begin, end, out);
+  else if (const auto* a = std::get_if<AreaBatchLight>(&light)) area_diffuse_batch(*a, points, begin, end, out);
+}
+
+const char* batch_instruction_set() {
+#if defined(__GNUC__) && defined(__x86_64__)
+  __builtin_cpu_init();
+  if (__builtin_cpu_supports("avx512f")) return "avx512";
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return "avx2";
+#endif
+  return "baseline";
+}
+
+}  // namespace vlit

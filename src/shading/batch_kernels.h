@@ -1,0 +1,46 @@
+// The float batch kernels (shaders_cpu/batch/) behind one entry point, and the choice of which
+// prepared lights can use them.
+//
+// A light gets a batch kernel when only its diffuse is needed and its model has one: point, spot
+// and directional with integer falloff 0..3, linear with falloff 2 or 3 (closed forms), convex
+// area polygons. Everything else (specular, real or 0/1 falloff of a linear light, non-convex
+// polygons, disks) stays on the scalar double kernels; batch_kernel_for says why.
+//
+// evaluate_diffuse_batch is compiled for AVX-512, AVX2 and baseline x86-64 and picks the variant
+// for the running CPU once, at load time (GCC function multiversioning): the release build stays
+// portable ("native-free") and still uses the widest vectors the machine has. Results are the
+// same bits whichever variant runs (shaders_cpu/batch/batch_points.h, "Determinism").
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "batch/area_diffuse_batch.h"
+#include "batch/batch_points.h"
+#include "batch/linear_diffuse_batch.h"
+#include "batch/punctual_diffuse_batch.h"
+#include "shading/prepared_light.h"
+
+namespace vlit {
+
+using BatchLight = std::variant<PunctualBatchLight, LinearBatchLight, AreaBatchLight>;
+
+struct BatchChoice {
+  std::optional<BatchLight> light;  // empty: the scalar double kernel runs
+  std::string reason;               // why not, when empty
+};
+
+// Whether `light` can use a float batch kernel under `options`, and its per-light constants.
+BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOptions& options);
+
+// Diffuse response (unit intensity, kd = 1, range window included) of one light at lanes
+// [begin, end) of `points`, with stiff lanes flagged (BatchOutput). No allocation.
+void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, long begin, long end,
+                            const BatchOutput& out);
+
+// Which instruction set evaluate_diffuse_batch runs with on this machine ("avx512", "avx2",
+// "baseline"), for --explain and the benchmark.
+const char* batch_instruction_set();
+
+}  // namespace vlit

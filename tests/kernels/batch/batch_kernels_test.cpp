@@ -1,0 +1,390 @@
+// Float batch kernels (shaders_cpu/batch/, shading/batch_kernels.h) against the double scalar
+// kernels, which are themselves checked against independent quadratures (tests/kernels/linear,
+// tests/kernels/area). Bars (the float bars): every lane the batch kernel does not flag
+// as stiff is within 1e-5 relative of the double kernel (or 1e-12 of the case set's largest
+// value, for values that are ~0); flagged lanes are recomputed in double by the bake. Each stiff
+// case is a named SUBCASE; failures print the seed or case and both values.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "batch/float_atan.h"
+#include "shading/batch_kernels.h"
+
+using namespace vlit;
+
+namespace {
+
+constexpr double kFloatBar = 1e-5;
+constexpr double kFloorFraction = 1e-12;
+
+struct Rng {
+  std::mt19937_64 gen;
+  explicit Rng(uint64_t seed) : gen(seed) {}
+  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gen); }
+  double log_uniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
+  Vec3d unit() {
+    for (;;) {
+      const Vec3d v{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+      const double l2 = length_squared(v);
+      if (l2 > 1e-4 && l2 <= 1) return v / std::sqrt(l2);
+    }
+  }
+};
+
+struct Points {
+  std::vector<double> px, py, pz;
+  std::vector<float> nx, ny, nz;
+  std::vector<ShadingPoint<double>> sp;
+  void add(const Vec3d& p, const Vec3d& n) {
+    const Vec3d nn = normalize(n);
+    px.push_back(p.x); py.push_back(p.y); pz.push_back(p.z);
+    nx.push_back(float(nn.x)); ny.push_back(float(nn.y)); nz.push_back(float(nn.z));
+    // The double reference sees the same (float) normal the batch kernel sees.
+    sp.push_back({p, Vec3d{nx.back(), ny.back(), nz.back()}, Vec3d{0, 0, 1}, 1});
+  }
+};
+
+struct Comparison {
+  double worst = 0;      // max relative error over unflagged lanes
+  long flagged = 0, lanes = 0;
+  double worst_combined = 0;  // after recomputing the flagged lanes in double (as the bake does)
+};
+
+ShadeOptions diffuse_only() {
+  ShadeOptions o;
+  o.with_specular = false;
+  o.specular.method = SpecularMethod::kNone;
+  return o;
+}
+
+// Runs the batch kernel of `light` over all points and compares with the double kernel.
+Comparison compare(const char* what, const LightSource& source, const Points& pts) {
+  const PreparedLight<double> light = prepare_light<double>(source);
+  const BatchChoice choice = batch_kernel_for(light, diffuse_only());
+  REQUIRE_MESSAGE(choice.light.has_value(), std::string(what) << ": no batch kernel: " << choice.reason);
+  const long n = long(pts.px.size());
+  std::vector<float> value(n);
+  std::vector<std::uint8_t> stiff(n);
+  const BatchPoints bp{pts.px.data(), pts.py.data(), pts.pz.data(), pts.nx.data(), pts.ny.data(), pts.nz.data()};
+  evaluate_diffuse_batch(*choice.light, bp, 0, n, BatchOutput{value.data(), stiff.data()});
+  std::vector<double> ref(n);
+  double max_ref = 0;
+  for (long i = 0; i < n; ++i) {
+    ref[i] = shade(light, pts.sp[i], diffuse_only()).diffuse;
+    max_ref = std::max(max_ref, ref[i]);
+  }
+  Comparison c;
+  c.lanes = n;
+  for (long i = 0; i < n; ++i) {
+    CHECK(std::isfinite(value[i]));
+    const double floor = std::max(std::fabs(ref[i]), kFloorFraction * max_ref);
+    if (stiff[i]) {
+      ++c.flagged;
+      CHECK(value[i] == 0.f);  // flagged lanes carry no value: the caller recomputes them
+      const double combined = double(float(ref[i]));
+      c.worst_combined = std::max(c.worst_combined, floor > 0 ? std::fabs(combined - ref[i]) / floor : 0.0);
+      continue;
+    }
+    const double err = floor > 0 ? std::fabs(double(value[i]) - ref[i]) / floor : std::fabs(double(value[i]));
+    c.worst = std::max(c.worst, err);
+    c.worst_combined = std::max(c.worst_combined, err);
+    if (!(err <= kFloatBar))
+      FAIL_CHECK(std::string(what) << " lane " << i << ": batch " << value[i] << " double " << ref[i] << " rel.err " << err
+                      << " P=(" << pts.px[i] << "," << pts.py[i] << "," << pts.pz[i] << ") N=(" << pts.nx[i] << ","
+                      << pts.ny[i] << "," << pts.nz[i] << ")");
+  }
+  MESSAGE(std::string(what) << ": max rel.err " << c.worst << " over " << (c.lanes - c.flagged) << " float lanes, " << c.flagged
+               << " of " << c.lanes << " lanes flagged stiff");
+  return c;
+}
+
+LightSource linear_source(const Vec3d& q0, const Vec3d& q1, double falloff) {
+  LightSource l;
+  l.type = LightType::kLinear;
+  l.name = "tube";
+  l.from = q0;
+  l.to = q1;
+  l.falloff = falloff;
+  return l;
+}
+
+LightSource area_source(std::vector<Vec3d> polygon, bool two_sided = false) {
+  LightSource l;
+  l.type = LightType::kArea;
+  l.name = "panel";
+  l.polygon = std::move(polygon);
+  l.two_sided = two_sided;
+  return l;
+}
+
+// Convex polygon with n vertices on an ellipse, CCW seen from the side `normal` points to.
+std::vector<Vec3d> convex_polygon(Rng& rng, const Vec3d& center, const Vec3d& normal, double size, double aspect, int n) {
+  std::vector<double> ang;
+  for (int i = 0; i < n; ++i) ang.push_back(rng.uniform(0, 2 * M_PI));
+  std::sort(ang.begin(), ang.end());
+  const Vec3d helper = std::fabs(normal.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+  const Vec3d e1 = normalize(cross(helper, normal));
+  const Vec3d e2 = cross(normal, e1);
+  std::vector<Vec3d> poly;
+  for (double a : ang) poly.push_back(center + e1 * (size * std::cos(a)) + e2 * (size * aspect * std::sin(a)));
+  return poly;
+}
+
+std::vector<Vec3d> square(double half, double height, double cx = 0, double cy = 0) {  // facing down (-z)
+  return {{cx - half, cy - half, height}, {cx - half, cy + half, height}, {cx + half, cy + half, height},
+          {cx + half, cy - half, height}};
+}
+
+}  // namespace
+
+TEST_CASE("float atan2 (float_atan.h) over the whole upper half plane") {
+  double worst = 0;
+  for (int i = 0; i <= 200000; ++i) {
+    const double angle = M_PI * i / 200000.0;
+    for (double r : {1e-30, 1e-3, 1.0, 1e20}) {
+      const float x = float(r * std::cos(angle)), y = float(std::fabs(r * std::sin(angle)));
+      const double ref = std::atan2(double(y), double(x));
+      const double got = batch_detail::atan2_upper(y, x);
+      if (ref > 0) worst = std::max(worst, std::fabs(got - ref) / ref);
+      else CHECK(got == 0);
+    }
+  }
+  MESSAGE("float atan2: max relative error " << worst);
+  CHECK(worst < 4e-7);
+}
+
+TEST_CASE("linear batch: random segments, falloff 2 and 3") {
+  for (double falloff : {2.0, 3.0}) {
+    Rng rng(2024 + uint64_t(falloff));
+    Points pts;
+    std::vector<LightSource> lights;
+    // One light, many points around it (the bake's shape): distances 1e-3 .. 1e3 of the length.
+    const Vec3d q0{0.3, -0.2, 1.1}, q1{-0.5, 0.4, 1.6};
+    for (int i = 0; i < 4096; ++i) {
+      const double len = length(q1 - q0);
+      const Vec3d mid = (q0 + q1) * 0.5;
+      const Vec3d p = mid + rng.unit() * (len * rng.log_uniform(1e-3, 1e3));
+      const Vec3d n = normalize(normalize(mid - p) + rng.unit() * 0.9);
+      pts.add(p, n);
+    }
+    const Comparison c = compare(falloff == 2 ? "linear n=2 random" : "linear n=3 random", linear_source(q0, q1, falloff), pts);
+    CHECK(c.worst <= kFloatBar);
+    CHECK(double(c.flagged) < 0.05 * double(c.lanes));  // the batch kernel does the work
+  }
+}
+
+TEST_CASE("linear batch: a floor under a tube (the benchmark's set)") {
+  Rng rng(3);
+  Points pts;
+  for (int i = 0; i < 8192; ++i)
+    pts.add({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-0.2, 0.2)},
+            {rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), 1});
+  for (double falloff : {2.0, 3.0}) {
+    const Comparison c = compare("linear floor", linear_source({-1, -0.3, 1.5}, {1, 0.3, 1.6}, falloff), pts);
+    CHECK(c.worst <= kFloatBar);
+  }
+}
+
+TEST_CASE("linear batch: stiff cases") {
+  for (double falloff : {2.0, 3.0}) {
+    CAPTURE(falloff);
+    Points pts;
+    const Vec3d q0{-1, 0, 1}, q1{1, 0, 1};
+    const LightSource tube = linear_source(q0, q1, falloff);
+    SUBCASE("collinear: P on the line of the segment, outside it") {
+      for (double x : {1.5, 2.0, 10.0, -3.0}) pts.add({x, 0, 1}, {0, 0.3, 1});
+      compare("linear stiff collinear", tube, pts);
+    }
+    SUBCASE("near-collinear: h = 1e-12 .. 1e-3 from the line, foot outside") {
+      for (double h = 1e-12; h <= 1e-3; h *= 10) pts.add({2, h, 1}, {-1, 0.2, 0.1});
+      compare("linear stiff near-collinear", tube, pts);
+    }
+    SUBCASE("far: distance 1e6") {
+      for (int i = 0; i < 8; ++i) pts.add({0.1 * i, 0.2, 1 - 1e6}, {0.1 * i, 0, 1});
+      compare("linear stiff far", tube, pts);
+    }
+    SUBCASE("near: distance 1e-6, foot inside and at an end") {
+      pts.add({0.3, 0, 1 - 1e-6}, {0, 0, 1});
+      pts.add({1, 0, 1 - 1e-6}, {0, 0, 1});
+      pts.add({-1, 1e-6, 1}, {0, -1, 0.1});
+      compare("linear stiff near", tube, pts);
+    }
+    SUBCASE("crossing the horizon and an endpoint on the tangent plane") {
+      pts.add({0, 0, 0}, {0.3, 0, 1});
+      pts.add({0, 0, 0}, {1, 0, 1});    // Q0 exactly on the plane
+      pts.add({0, 0, 0}, {1, 0, 0.2});
+      pts.add({0.5, 0.5, 0.9}, {0, 0, 1});
+      compare("linear stiff horizon", tube, pts);
+    }
+    SUBCASE("grazing: L.N ~ 1e-6 |L|") {
+      pts.add({0, -1, 1}, {0, 1e-6, -1});
+      pts.add({0, -1, 1}, {1e-3, 1e-6, -1});
+      compare("linear stiff grazing", tube, pts);
+    }
+    SUBCASE("offset 1e4: light and P far from the origin") {
+      const LightSource far = linear_source(q0 + Vec3d{1e4, -1e4, 1e4}, q1 + Vec3d{1e4, -1e4, 1e4}, falloff);
+      for (int i = 0; i < 8; ++i) pts.add(Vec3d{0.2 * i, 0.3, 0} + Vec3d{1e4, -1e4, 1e4}, {0.1, 0, 1});
+      const Comparison c = compare("linear stiff offset", far, pts);
+      CHECK(c.flagged == 0);  // the double set-up keeps the offset harmless
+    }
+    SUBCASE("P at an endpoint and on the segment") {
+      pts.add(q0, {1, 0.2, 1});  // the segment crosses the tangent plane at P
+      pts.add({0, 0, 1}, {1, 0.2, 1});
+      pts.add({0, 0, 1}, {0, 0, 1});  // the segment lies in the tangent plane: 0
+      compare("linear stiff on segment", tube, pts);
+    }
+  }
+}
+
+TEST_CASE("area batch: random convex polygons (3..8 vertices), one- and two-sided") {
+  Rng rng(77);
+  double worst = 0;
+  long flagged = 0, lanes = 0;
+  for (int l = 0; l < 24; ++l) {
+    const int n = 3 + l % 6;
+    const Vec3d normal = normalize(Vec3d{rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), -1});
+    const Vec3d center{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(1, 3)};
+    const auto poly = convex_polygon(rng, center, normal, rng.uniform(0.2, 1.5), rng.uniform(0.3, 1), n);
+    Points pts;
+    for (int i = 0; i < 512; ++i) {
+      const Vec3d p{rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-0.5, 0.5)};
+      pts.add(p, normalize(normalize(center - p) + rng.unit() * 0.9));
+    }
+    const std::string what = "area random light " + std::to_string(l) + " (" + std::to_string(n) + " vertices)";
+    const Comparison c = compare(what.c_str(), area_source(poly, l % 4 == 0), pts);
+    worst = std::max(worst, c.worst);
+    flagged += c.flagged;
+    lanes += c.lanes;
+  }
+  MESSAGE("area random: max rel.err " << worst << ", " << flagged << " of " << lanes << " lanes flagged stiff");
+  CHECK(worst <= kFloatBar);
+  // Normals here are far more random than a mesh's: a quarter of the lanes see the light grazing or
+  // cut by the horizon, where float cancels (area_diffuse_batch.h) and the double kernel takes over.
+  CHECK(double(flagged) < 0.3 * double(lanes));
+}
+
+TEST_CASE("area batch: stiff cases") {
+  Points pts;
+  SUBCASE("far: unit square at distance 1e6") {
+    for (int i = 0; i < 4; ++i) pts.add({0.1 * i, 0, 0}, {0.3, -0.2, 1});
+    const Comparison c = compare("area stiff far", area_source(square(0.5, 1e6)), pts);
+    CHECK(c.flagged == 0);  // the small-light form has no cancellation
+  }
+  SUBCASE("near: P 1e-6 below the square, inside and under an edge") {
+    pts.add({0.1, 0.2, 1 - 1e-6}, {0, 0, 1});
+    pts.add({0.5, 0.2, 1 - 1e-6}, {0, 0.1, 1});
+    compare("area stiff near", area_source(square(0.5, 1)), pts);
+  }
+  SUBCASE("P in the light's plane: outside, on an edge, at a vertex") {
+    pts.add({3, 0, 1}, {-1, 0, 0});
+    pts.add({0.5, 0, 1}, {-1, 0, -1});
+    pts.add({0.5, 0.5, 1}, {-1, 0, -1});
+    const Comparison c = compare("area stiff in plane", area_source(square(0.5, 1)), pts);
+    CHECK(c.flagged == 0);
+  }
+  SUBCASE("grazing and crossing the horizon") {
+    pts.add({0, 0, 0}, {1, 0, 1e-6});
+    pts.add({0, 0, 0}, {1, 0, 0.3});
+    pts.add({0.2, 0.1, 0.5}, {0, 1, 0.05});
+    pts.add({0, 0, 0.99}, {1, 0.2, 0});
+    compare("area stiff horizon", area_source(square(0.5, 1)), pts);
+  }
+  SUBCASE("thin: aspect 1e-6") {
+    pts.add({0.2, 0.1, 0}, {0, 0.3, 1});
+    pts.add({0.2, 0.1, 1.999}, {0, 0.3, 1});
+    compare("area stiff thin", area_source({{-1, -1e-6, 2}, {-1, 1e-6, 2}, {1, 1e-6, 2}, {1, -1e-6, 2}}), pts);
+  }
+  SUBCASE("huge: 1e6 square 1 above P") {
+    pts.add({0, 0, 0}, {0.2, 0, 1});
+    compare("area stiff huge", area_source(square(1e6, 1, 1e5, 0)), pts);
+  }
+  SUBCASE("offset 1e4") {
+    const Vec3d o{1e4, -1e4, 1e4};
+    std::vector<Vec3d> sq = square(0.5, 1);
+    for (auto& q : sq) q += o;
+    for (int i = 0; i < 8; ++i) pts.add(Vec3d{0.2 * i - 0.7, 0.1, 0} + o, {0.1, 0, 1});
+    compare("area stiff offset", area_source(sq), pts);
+  }
+  SUBCASE("behind a one-sided light, and the back of a two-sided one") {
+    pts.add({0, 0, 2}, {0, 0, -1});
+    pts.add({0.3, 0, 3}, {0.2, 0, -1});
+    compare("area stiff behind", area_source(square(0.5, 1)), pts);
+    compare("area stiff two-sided back", area_source(square(0.5, 1), true), pts);
+  }
+}
+
+TEST_CASE("punctual batch: point, spot and directional, falloff 0..3, range window") {
+  Rng rng(5);
+  Points pts;
+  for (int i = 0; i < 2048; ++i) {
+    const Vec3d p{rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 1)};
+    pts.add(p, rng.unit() + Vec3d{0, 0, 0.5});
+  }
+  for (double falloff : {0.0, 1.0, 2.0, 3.0}) {
+    LightSource point;
+    point.type = LightType::kPoint;
+    point.name = "point";
+    point.position = {0.5, -0.3, 2};
+    point.falloff = falloff;
+    CHECK(compare("point", point, pts).flagged == 0);
+    point.range = 3.5;
+    CHECK(compare("point with range", point, pts).flagged == 0);
+    LightSource spot = point;
+    spot.type = LightType::kSpot;
+    spot.name = "spot";
+    spot.direction = normalize(Vec3d{0.2, 0.1, -1});
+    spot.cos_inner = std::cos(0.3);
+    spot.cos_outer = std::cos(0.6);
+    CHECK(compare("spot", spot, pts).flagged == 0);
+  }
+  LightSource sun;
+  sun.type = LightType::kDirectional;
+  sun.name = "sun";
+  sun.direction = normalize(Vec3d{0.3, -0.2, -1});
+  CHECK(compare("directional", sun, pts).flagged == 0);
+}
+
+TEST_CASE("batch kernel choice: specular, falloff and non-convex polygons stay scalar") {
+  ShadeOptions with_spec;
+  CHECK_FALSE(batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, 2)), with_spec).light);
+  CHECK(batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, 2)), diffuse_only()).light);
+  CHECK_FALSE(batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, 1.5)), diffuse_only()).light);
+  const std::vector<Vec3d> l_shape{{0, 0, 1}, {0, 2, 1}, {1, 2, 1}, {1, 1, 1}, {2, 1, 1}, {2, 0, 1}};  // CW seen from below
+  CHECK_FALSE(batch_kernel_for(prepare_light<double>(area_source(l_shape)), diffuse_only()).light);
+  CHECK(batch_kernel_for(prepare_light<double>(area_source(square(0.5, 1))), diffuse_only()).light);
+}
+
+TEST_CASE("batch kernels: a lane's bits do not depend on how the lanes are split") {
+  // Vector body, masked or scalar remainder: the same operations, each correctly rounded.
+  Rng rng(11);
+  Points pts;
+  for (int i = 0; i < 1000; ++i) {
+    const Vec3d p{rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-1, 0.5)};
+    pts.add(p, rng.unit() + Vec3d{0, 0, 1});
+  }
+  const BatchPoints bp{pts.px.data(), pts.py.data(), pts.pz.data(), pts.nx.data(), pts.ny.data(), pts.nz.data()};
+  LightSource spot;
+  spot.type = LightType::kSpot;
+  spot.name = "spot";
+  spot.position = {0, 0, 2};
+  for (const LightSource& source : {linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 2), linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 3),
+                                    area_source(square(0.7, 1.5)), spot}) {
+    CAPTURE(int(source.type));
+    const BatchChoice choice = batch_kernel_for(prepare_light<double>(source), diffuse_only());
+    REQUIRE(choice.light);
+    std::vector<float> whole(1000), pieces(1000);
+    std::vector<std::uint8_t> s1(1000), s2(1000);
+    evaluate_diffuse_batch(*choice.light, bp, 0, 1000, {whole.data(), s1.data()});
+    for (long b = 0, step = 1; b < 1000; b += step, step = step * 3 % 37 + 1)
+      evaluate_diffuse_batch(*choice.light, bp, b, std::min(1000L, b + step), {pieces.data(), s2.data()});
+    CHECK(std::memcmp(whole.data(), pieces.data(), whole.size() * sizeof(float)) == 0);
+    CHECK(s1 == s2);
+  }
+}

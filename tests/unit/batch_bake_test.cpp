@@ -1,0 +1,135 @@
+// The bake's float batch path (bake/batch_lighting.h): its result does not depend on the number
+// of threads, it agrees with the scalar double path within the float bar, and the plan says which
+// lights use it.
+#include <doctest/doctest.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "bake/light_vertices.h"
+#include "plan/scene_plan.h"
+
+using namespace vlit;
+
+namespace {
+
+// A wavy sheet of side x side vertices with analytic normals, over [-2, 2]^2.
+ScenePrimitive wavy_sheet(int side) {
+  ScenePrimitive p;
+  for (int j = 0; j < side; ++j)
+    for (int i = 0; i < side; ++i) {
+      const double x = -2 + 4.0 * i / (side - 1), y = -2 + 4.0 * j / (side - 1);
+      const double z = 0.2 * std::sin(3 * x) * std::cos(2 * y);
+      p.positions.push_back({x, y, z});
+      p.normals.push_back(normalize(Vec3d{-0.6 * std::cos(3 * x) * std::cos(2 * y), 0.4 * std::sin(3 * x) * std::sin(2 * y), 1}));
+    }
+  return p;
+}
+
+Scene test_scene() {
+  Scene scene;
+  scene.primitives.push_back(wavy_sheet(131));  // 17161 vertices: one full chunk of 16384 and a partial one
+  auto add = [&](LightSource l, const char* name) {
+    l.name = name;
+    scene.lights.push_back(std::move(l));
+  };
+  LightSource quad;
+  quad.type = LightType::kArea;
+  quad.polygon = {{-1, -1, 2}, {-1, 0, 2}, {0, 0, 2.2}, {0, -1, 2.2}};  // counter-clockwise seen from below
+  add(quad, "quad");
+  LightSource tri;
+  tri.type = LightType::kArea;
+  tri.polygon = {{1, 1, 1}, {1.5, 1, 1.2}, {1, 1.6, 1}};
+  tri.two_sided = true;
+  add(tri, "triangle");
+  LightSource l_shape;
+  l_shape.type = LightType::kArea;
+  l_shape.polygon = {{0, 0, 3}, {0, 2, 3}, {1, 2, 3}, {1, 1, 3}, {2, 1, 3}, {2, 0, 3}};
+  add(l_shape, "l-shape");
+  LightSource tube;
+  tube.type = LightType::kLinear;
+  tube.from = {-2, 1, 1};
+  tube.to = {2, 1.5, 1.2};
+  tube.color = {1, 0.5, 0.25};
+  add(tube, "tube2");
+  tube.from = {1, -2, 0.8};
+  tube.to = {1.2, 2, 0.7};
+  tube.falloff = 3;
+  add(tube, "tube3");
+  tube.falloff = 1;
+  add(tube, "tube1");
+  LightSource point;
+  point.position = {0.3, 0.2, 1.5};
+  point.range = 3.0;
+  add(point, "point");
+  LightSource spot;
+  spot.type = LightType::kSpot;
+  spot.position = {-0.5, 0.5, 2};
+  spot.direction = normalize(Vec3d{0.3, 0, -1});
+  spot.cos_inner = std::cos(0.4);
+  spot.cos_outer = std::cos(0.7);
+  add(spot, "spot");
+  return scene;
+}
+
+std::vector<VertexLight> light_with_threads(const Scene& scene, int threads, bool float_batch) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  LightingRequest request;
+  request.float_batch = float_batch;
+  auto out = light_scene_vertices(scene, request);
+  omp_set_num_threads(saved);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("batch bake: the plan names the float batch kernels and why the others stay scalar") {
+  const Scene scene = test_scene();
+  const std::string text = describe(plan_lighting(scene, LightingRequest{}), scene);
+  CHECK(text.find("light quad: area contour integral (eq. 9), 17161 vertices, float SIMD batch") != std::string::npos);
+  CHECK(text.find("light l-shape: area contour integral (eq. 9), 17161 vertices, scalar double (non-convex polygon)") !=
+        std::string::npos);
+  CHECK(text.find("light tube1: linear closed form (eq. 4), 17161 vertices, scalar double (falloff other than 2 or 3)") !=
+        std::string::npos);
+  LightingRequest with_eye;
+  with_eye.eye = Vec3d{0, 0, 5};
+  CHECK(describe(plan_lighting(scene, with_eye), scene).find("float SIMD batch") == std::string::npos);
+  LightingRequest scalar;
+  scalar.float_batch = false;
+  CHECK(describe(plan_lighting(scene, scalar), scene).find("scalar double (double precision requested)") != std::string::npos);
+}
+
+TEST_CASE("batch bake: bit-identical on 1 and 2 threads") {
+  const Scene scene = test_scene();
+  for (bool float_batch : {true, false}) {
+    CAPTURE(float_batch);
+    const auto one = light_with_threads(scene, 1, float_batch);
+    const auto two = light_with_threads(scene, 2, float_batch);
+    REQUIRE(one.size() == two.size());
+    const auto& a = one[0].diffuse;
+    const auto& b = two[0].diffuse;
+    REQUIRE(a.size() == b.size());
+    CHECK(std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3f)) == 0);
+  }
+}
+
+TEST_CASE("batch bake: float batch path within 1e-5 of the scalar double path") {
+  const Scene scene = test_scene();
+  const auto batch = light_with_threads(scene, 2, true)[0].diffuse;
+  const auto scalar = light_with_threads(scene, 2, false)[0].diffuse;
+  double max_value = 0;
+  for (const Vec3f& c : scalar) max_value = std::max({max_value, double(c.x), double(c.y), double(c.z)});
+  double worst = 0;
+  for (std::size_t v = 0; v < scalar.size(); ++v)
+    for (int k = 0; k < 3; ++k) {
+      const double ref = scalar[v][k], got = batch[v][k];
+      worst = std::max(worst, std::fabs(got - ref) / std::max(std::fabs(ref), 1e-12 * max_value));
+    }
+  MESSAGE("batch vs scalar bake: max relative difference " << worst);
+  CHECK(worst <= 1e-5);
+  CHECK(max_value > 0);
+}

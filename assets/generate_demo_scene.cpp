@@ -19,22 +19,7 @@ namespace {
 using vlit::MeshData;
 using vlit::Vec3d;
 
-// A (nu x nv)-cell grid over origin + s*u + t*v, s, t in [0, 1], facing cross(u, v).
-MeshData grid(Vec3d origin, Vec3d u, Vec3d v, int nu, int nv) {
-  MeshData m;
-  const Vec3d n = vlit::normalize(vlit::cross(u, v));
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i) {
-      m.positions.push_back(origin + u * (double(i) / nu) + v * (double(j) / nv));
-      m.normals.push_back(n);
-    }
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const std::uint32_t a = j * (nu + 1) + i, b = a + 1, c = a + (nu + 1), d = c + 1;
-      m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
-    }
-  return m;
-}
+using vlit::grid_mesh;
 
 // A surface of revolution around +Y through the profile (radius r(t), height y(t)), t in [0, 1].
 template <class Profile>
@@ -75,7 +60,7 @@ MeshData box(Vec3d lo, Vec3d hi, int cells) {
       {{lo.x, lo.y, lo.z}, {e.x, 0, 0}, {0, 0, e.z}},   // -Y
   };
   for (const auto& f : faces) {
-    const MeshData g = grid(f[0], f[1], f[2], cells, cells);
+    const MeshData g = grid_mesh(f[0], f[1], f[2], cells, cells);
     m.append(g);
   }
   return m;
@@ -96,8 +81,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   vlit::GltfSceneWriter scene("vlit generate_demo_scene");
-  add_object(scene, "floor", grid({-3, 0, 2}, {6, 0, 0}, {0, 0, -5}, 96, 80), {0.8, 0.8, 0.78}, 0.9);
-  add_object(scene, "back wall", grid({-3, 0, -3}, {6, 0, 0}, {0, 3, 0}, 96, 48), {0.7, 0.72, 0.8}, 0.9);
+  add_object(scene, "floor", grid_mesh({-3, 0, 2}, {6, 0, 0}, {0, 0, -5}, 96, 80), {0.8, 0.8, 0.78}, 0.9);
+  add_object(scene, "back wall", grid_mesh({-3, 0, -3}, {6, 0, 0}, {0, 3, 0}, 96, 48), {0.7, 0.72, 0.8}, 0.9);
   add_object(scene, "sphere", lathe({-1.2, 0.6, 0}, 48, 96,
                                     [](double t) { const double a = M_PI * t - M_PI / 2;  // bottom to top
                                                    return std::pair{0.6 * std::cos(a), 0.6 * std::sin(a)}; }),

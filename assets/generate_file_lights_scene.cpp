@@ -18,22 +18,7 @@ using vlit::MeshData;
 using vlit::Vec3d;
 using Value = tinygltf::Value;
 
-// A (nu x nv)-cell grid over origin + s*u + t*v, s, t in [0, 1], facing cross(u, v).
-MeshData grid(Vec3d origin, Vec3d u, Vec3d v, int nu, int nv) {
-  MeshData m;
-  const Vec3d n = vlit::normalize(vlit::cross(u, v));
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i) {
-      m.positions.push_back(origin + u * (double(i) / nu) + v * (double(j) / nv));
-      m.normals.push_back(n);
-    }
-  for (int j = 0; j < nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const std::uint32_t a = j * (nu + 1) + i, b = a + 1, c = a + (nu + 1), d = c + 1;
-      m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
-    }
-  return m;
-}
+using vlit::grid_mesh;
 
 Value number(double x) { return Value(x); }
 Value vec3(double x, double y, double z) { return Value(Value::Array{number(x), number(y), number(z)}); }
@@ -62,8 +47,8 @@ int main(int argc, char** argv) {
   const int wall_mat = scene.material({"wall", {0.8, 0.75, 0.7}, 0.9, 0});
   const int glow_line = scene.material({"neon", {1, 1, 1}, 1, 0, {0.2, 0.6, 1.0}, 0.3});
   const int glow_panel = scene.material({"glow panel", {1, 1, 1}, 1, 0, {1.0, 0.8, 0.5}, 0.5});
-  scene.node("floor", scene.mesh("floor", {{grid({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 24, 24), floor_mat}}));
-  scene.node("back wall", scene.mesh("back wall", {{grid({-3, 0, -3}, {6, 0, 0}, {0, 3, 0}, 24, 12), wall_mat}}));
+  scene.node("floor", scene.mesh("floor", {{grid_mesh({-3, 0, 3}, {6, 0, 0}, {0, 0, -6}, 24, 24), floor_mat}}));
+  scene.node("back wall", scene.mesh("back wall", {{grid_mesh({-3, 0, -3}, {6, 0, 0}, {0, 3, 0}, 24, 12), wall_mat}}));
   scene.node("neon", scene.line_mesh("neon", {{-2, 0.3, -2.9}, {2, 0.3, -2.9}}, glow_line));
   // Emissive quad under the ceiling facing down: counter-clockwise seen from below.
   MeshData quad;

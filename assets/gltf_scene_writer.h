@@ -32,6 +32,24 @@ struct MeshData {
   }
 };
 
+// A flat (nu x nv)-cell grid over origin + s*u + t*v, s, t in [0, 1], facing cross(u, v); each
+// cell split along its a-d diagonal.
+inline MeshData grid_mesh(Vec3d origin, Vec3d u, Vec3d v, int nu, int nv) {
+  MeshData m;
+  const Vec3d n = normalize(cross(u, v));
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i) {
+      m.positions.push_back(origin + u * (double(i) / nu) + v * (double(j) / nv));
+      m.normals.push_back(n);
+    }
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const std::uint32_t a = j * (nu + 1) + i, b = a + 1, c = a + (nu + 1), d = c + 1;
+      m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
+    }
+  return m;
+}
+
 struct MaterialSpec {
   std::string name;
   std::array<double, 3> base_color;

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "bake/light_vertices.h"
@@ -20,15 +21,21 @@
 
 namespace vlit::bench {
 
-// Lights Cycles can represent (bench/blender_bake.py): linear lights of falloff 2, a rectangular
-// area light, a point light; placed around the asset's bounding box like the end-to-end set.
-inline std::vector<LightSource> blender_comparison_lights(const Scene& scene) {
+// The axis-aligned box of every vertex of the scene: where the report places its lights.
+inline std::pair<Vec3d, Vec3d> scene_box(const Scene& scene) {
   Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const auto& p : scene.primitives)
     for (const Vec3d& v : p.positions) {
       lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
       hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
     }
+  return {lo, hi};
+}
+
+// Lights Cycles can represent (bench/blender_bake.py): linear lights of falloff 2, a rectangular
+// area light, a point light; placed around the asset's bounding box like the end-to-end set.
+inline std::vector<LightSource> blender_comparison_lights(const Scene& scene) {
+  const auto [lo, hi] = scene_box(scene);
   const Vec3d c = (lo + hi) * 0.5;
   const double s = length(hi - lo) * 0.5;
   std::vector<LightSource> lights;

@@ -1197,12 +1197,7 @@ EndToEnd end_to_end(const Options& o) {
   LoadedScene loaded = load_scene(o.asset, "", false);
   Scene& scene = loaded.scene;
   // Lights placed around the asset's bounding box.
-  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const auto& p : scene.primitives)
-    for (const Vec3d& v : p.positions) {
-      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
-      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
-    }
+  const auto [lo, hi] = scene_box(scene);
   const Vec3d c = (lo + hi) * 0.5;
   const double s = length(hi - lo) * 0.5;
   scene.lights.clear();

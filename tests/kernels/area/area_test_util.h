@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "support/test_rng.h"
 #include "area_light.h"
 #include "area_reference.h"
 
@@ -35,19 +36,6 @@ inline ErrorMeasure measure(double value, double ref, double scale) {
   return e;
 }
 
-struct Rng {
-  std::mt19937_64 gen;
-  explicit Rng(uint64_t seed) : gen(seed) {}
-  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gen); }
-  double log_uniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
-  Vec3d unit() {
-    for (;;) {
-      const Vec3d v{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-      const double l2 = length_squared(v);
-      if (l2 > 1e-4 && l2 <= 1) return v / std::sqrt(l2);
-    }
-  }
-};
 
 // A random convex polygon with 3..max_n vertices on an ellipse (semi-axes size, size*aspect),
 // centered at `center`, CCW seen from the side `normal` points to.

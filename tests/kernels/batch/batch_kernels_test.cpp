@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "support/test_rng.h"
 #include "batch/float_atan.h"
 #include "shading/batch_kernels.h"
 
@@ -24,19 +25,7 @@ namespace {
 constexpr double kFloatBar = 1e-5;
 constexpr double kFloorFraction = 1e-12;
 
-struct Rng {
-  std::mt19937_64 gen;
-  explicit Rng(uint64_t seed) : gen(seed) {}
-  double uniform(double a, double b) { return std::uniform_real_distribution<double>(a, b)(gen); }
-  double log_uniform(double a, double b) { return std::exp(uniform(std::log(a), std::log(b))); }
-  Vec3d unit() {
-    for (;;) {
-      const Vec3d v{uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
-      const double l2 = length_squared(v);
-      if (l2 > 1e-4 && l2 <= 1) return v / std::sqrt(l2);
-    }
-  }
-};
+using vlit::test::Rng;
 
 struct Points {
   std::vector<double> px, py, pz;

@@ -29,4 +29,7 @@ if [[ -d $shared ]]; then
   $vlit bake "$shared/VertexColorTest/glTF/VertexColorTest.gltf" --lights assets/demo/lights.json --mode multiply \
     --color-format float -o "$out/VertexColorTest-multiply.gltf" -q
 fi
+# A mesh file (OBJ through OpenMesh) baked into a new glTF document.
+bunny=../shared/assets/mesh/StanfordBunny/stanford-bunny.obj
+[[ -f $bunny ]] && $vlit bake "$bunny" --lights assets/demo/lights.json -o "$out/stanford-bunny.glb" -q
 node tests/validator/validate.js "$out"/*.glb "$out"/*.gltf

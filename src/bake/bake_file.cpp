@@ -6,6 +6,7 @@
 #include "bake/light_vertices.h"
 #include "core/input_error.h"
 #include "gltf/gltf_writer.h"
+#include "gltf/mesh_to_gltf.h"
 #include "scene/load_scene.h"
 
 namespace vlit {
@@ -25,7 +26,8 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   auto t = Clock::now();
   LoadedScene loaded = load_scene(input, options.lights_path, options.use_file_lights);
-  if (!loaded.gltf) throw InputError(input, "bake writes vertex colors into glTF and needs a .gltf or .glb input");
+  // A mesh file (OBJ, PLY, OFF, STL) becomes a new glTF document holding its meshes.
+  tinygltf::Model model = loaded.gltf ? std::move(loaded.gltf->model) : gltf_from_mesh_scene(loaded.scene);
   BakeFileResult result;
   result.seconds.load = since(t);
   result.warnings = std::move(loaded.warnings);
@@ -52,7 +54,6 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   if (options.cancel && options.cancel->load()) throw InputError(input, "interrupted; no output written");
 
   t = Clock::now();
-  tinygltf::Model model = std::move(loaded.gltf->model);
   BakeOptions encode = options.encode;
   encode.source = input;
   result.report = bake_vertex_colors(model, loaded.scene, light, encode);

@@ -157,7 +157,8 @@ int run_bake(const BakeArgs& args) {
     return 0;
   }
 
-  // Batch: OUT is a directory; each input keeps its relative path and its extension.
+  // Batch: OUT is a directory; each input keeps its relative path and its extension (.glb for a
+  // mesh file).
   if (!fs::exists(args.output, ec)) fs::create_directories(args.output, ec);
   if (!fs::is_directory(args.output, ec)) throw InputError(args.output, "a batch needs -o to be a directory");
   std::vector<std::string> failures;
@@ -166,7 +167,8 @@ int run_bake(const BakeArgs& args) {
   std::size_t done = 0;
   for (const auto& [input, relative] : files) {
     if (g_interrupted.load()) break;
-    const fs::path output = fs::path(args.output) / relative;
+    fs::path output = fs::path(args.output) / relative;
+    if (!is_gltf_path(input)) output.replace_extension(".glb");  // a mesh file's bake is a new glTF
     progress.start_file(relative.string());
     try {
       fs::create_directories(output.parent_path(), ec);
@@ -202,8 +204,8 @@ Runner add_bake_command(CLI::App& app) {
   auto args = std::make_shared<BakeArgs>();
   CLI::App* cmd = app.add_subcommand("bake", "Light every vertex and store the light as glTF vertex colors (COLOR_0).");
   cmd->add_option("inputs", args->inputs,
-                  "Input assets (.gltf or .glb), directories (searched recursively) or quoted glob patterns; "
-                  "inputs are never modified")
+                  "Input assets (.gltf or .glb; OBJ, PLY, OFF or STL meshes become a new glTF), directories "
+                  "(searched recursively for glTF) or quoted glob patterns; inputs are never modified")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output file (.glb or .gltf) for one input; for several inputs, a directory")

@@ -177,14 +177,36 @@ TEST_CASE("batch bake: a directory of inputs into a directory, failures reported
   CHECK(load_gltf_file((out / "sub" / "b.glb").string()).model.meshes[0].primitives[0].attributes.count("COLOR_0"));
 }
 
-TEST_CASE("bake of a mesh file is refused with a clear error") {
+TEST_CASE("bake of a mesh file writes a new glTF with its light in COLOR_0") {
   const auto dir = vlit::test::temp_dir("cli-obj");
-  const auto obj = dir / "quad.obj";
+  const auto obj = dir / "tri.obj";
   std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
-  const auto r = run_command(kVlit + " bake " + q(obj.string()) + " -o " + q((dir / "out.glb").string()));
-  CHECK(r.exit_code == 1);
-  CHECK(r.err.find("needs a .gltf or .glb input") != std::string::npos);
-  CHECK_FALSE(std::filesystem::exists(dir / "out.glb"));
+  const auto lights = dir / "lights.json";
+  std::ofstream(lights) << R"({"lights": [{"type": "point", "position": [0, 0, 1], "intensity": 0.5}]})";
+  const auto out = dir / "out.glb";
+  const auto r = run_command(kVlit + " bake " + q(obj.string()) + " --lights " + q(lights.string()) + " -o " +
+                             q(out.string()) + " --color-format float -q");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  const tinygltf::Model model = load_gltf_file(out.string()).model;
+  REQUIRE(model.meshes.size() == 1);
+  const auto& prim = model.meshes[0].primitives[0];
+  REQUIRE(prim.attributes.count("COLOR_0"));
+  const std::vector<double> c = vlit::read_accessor_as_doubles(model, prim.attributes.at("COLOR_0"), out.string());
+  const std::size_t comps = c.size() / 3;  // RGB or RGBA per vertex
+  // By hand, Lambert with inverse-square falloff: vertex (0,0,0) is 1 below the light (cos 1,
+  // d^2 = 1), vertex (1,0,0) sees it at cos 1/sqrt(2) from d^2 = 2, so E1 / E0 = 1 / (2 sqrt 2).
+  // The ratio does not depend on the intensity's radiometric scale.
+  REQUIRE(c[0] > 0);
+  CHECK(c[comps] / c[0] == doctest::Approx(1 / (2 * std::sqrt(2.0))).epsilon(1e-6));
+  CHECK(c[0] == c[1]);  // white light: grey
+  // In a batch a mesh file's output is named .glb.
+  std::filesystem::copy_file(obj, dir / "tri2.obj");
+  const auto batch = dir / "batch";
+  const auto rb = run_command(kVlit + " bake " + q((dir / "*.obj").string()) + " --lights " + q(lights.string()) +
+                              " -o " + q(batch.string()) + " -q");
+  CHECK_MESSAGE(rb.exit_code == 0, rb.err);
+  CHECK(std::filesystem::exists(batch / "tri.glb"));
+  CHECK(std::filesystem::exists(batch / "tri2.glb"));
 }
 
 TEST_CASE("--explain prints the plan and per-stage times") {

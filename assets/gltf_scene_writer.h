@@ -15,6 +15,7 @@
 #include <tiny_gltf.h>
 
 #include "core/vec3.h"
+#include "gltf/gltf_append.h"
 #include "io/atomic_write.h"
 
 namespace vlit {
@@ -177,41 +178,9 @@ class GltfSceneWriter {
     model_.scenes[0].nodes.push_back(static_cast<int>(model_.nodes.size()) - 1);
   }
 
-  int view(const void* data, std::size_t bytes, int target) {
-    auto& buffer = model_.buffers[0].data;
-    while (buffer.size() % 4) buffer.push_back(0);
-    tinygltf::BufferView v;
-    v.buffer = 0;
-    v.byteOffset = buffer.size();
-    v.byteLength = bytes;
-    v.target = target;
-    const auto* b = static_cast<const unsigned char*>(data);
-    buffer.insert(buffer.end(), b, b + bytes);
-    model_.bufferViews.push_back(v);
-    return static_cast<int>(model_.bufferViews.size()) - 1;
-  }
-
+  int view(const void* data, std::size_t bytes, int target) { return append_buffer_view(model_, data, bytes, target); }
   int vec3_accessor(const std::vector<Vec3d>& values, bool with_bounds) {
-    std::vector<float> f;
-    std::vector<double> lo(3, 1e30), hi(3, -1e30);
-    for (const Vec3d& v : values)
-      for (int c = 0; c < 3; ++c) {
-        const float x = static_cast<float>(v[c]);
-        f.push_back(x);
-        lo[c] = std::min<double>(lo[c], x);
-        hi[c] = std::max<double>(hi[c], x);
-      }
-    tinygltf::Accessor acc;
-    acc.bufferView = view(f.data(), f.size() * 4, TINYGLTF_TARGET_ARRAY_BUFFER);
-    acc.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
-    acc.type = TINYGLTF_TYPE_VEC3;
-    acc.count = values.size();
-    if (with_bounds) {
-      acc.minValues = lo;
-      acc.maxValues = hi;
-    }
-    model_.accessors.push_back(acc);
-    return static_cast<int>(model_.accessors.size()) - 1;
+    return append_vec3_accessor(model_, values, with_bounds);
   }
 
   // The unit quaternion [x, y, z, w] of the rotation whose matrix has columns x, y, z

@@ -37,11 +37,10 @@ inline ErrorMeasure measure(double value, double ref, double scale) {
 }
 
 
-// A random convex polygon with 3..max_n vertices on an ellipse (semi-axes size, size*aspect),
+// A convex polygon with n vertices at random angles on an ellipse (semi-axes size, size*aspect),
 // centered at `center`, CCW seen from the side `normal` points to.
-inline std::vector<Vec3d> random_convex_polygon(Rng& rng, const Vec3d& center, const Vec3d& normal, double size,
-                                                double aspect, int max_n) {
-  const int n = 3 + static_cast<int>(rng.uniform(0, max_n - 2.0 - 1e-9));
+inline std::vector<Vec3d> convex_polygon(Rng& rng, const Vec3d& center, const Vec3d& normal, double size,
+                                         double aspect, int n) {
   std::vector<double> ang;
   for (int i = 0; i < n; ++i) ang.push_back(rng.uniform(0, 2 * M_PI));
   std::sort(ang.begin(), ang.end());
@@ -51,6 +50,13 @@ inline std::vector<Vec3d> random_convex_polygon(Rng& rng, const Vec3d& center, c
   std::vector<Vec3d> poly;
   for (double a : ang) poly.push_back(center + e1 * (size * std::cos(a)) + e2 * (size * aspect * std::sin(a)));
   return poly;
+}
+
+// The same with a random vertex count in 3..max_n.
+inline std::vector<Vec3d> random_convex_polygon(Rng& rng, const Vec3d& center, const Vec3d& normal, double size,
+                                                double aspect, int max_n) {
+  const int n = 3 + static_cast<int>(rng.uniform(0, max_n - 2.0 - 1e-9));
+  return convex_polygon(rng, center, normal, size, aspect, n);
 }
 
 inline std::string describe(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp) {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "kernels/area/area_test_util.h"
 #include "support/test_rng.h"
 #include "batch/float_atan.h"
 #include "shading/batch_kernels.h"
@@ -113,18 +114,7 @@ LightSource area_source(std::vector<Vec3d> polygon, bool two_sided = false) {
   return l;
 }
 
-// Convex polygon with n vertices on an ellipse, CCW seen from the side `normal` points to.
-std::vector<Vec3d> convex_polygon(Rng& rng, const Vec3d& center, const Vec3d& normal, double size, double aspect, int n) {
-  std::vector<double> ang;
-  for (int i = 0; i < n; ++i) ang.push_back(rng.uniform(0, 2 * M_PI));
-  std::sort(ang.begin(), ang.end());
-  const Vec3d helper = std::fabs(normal.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
-  const Vec3d e1 = normalize(cross(helper, normal));
-  const Vec3d e2 = cross(normal, e1);
-  std::vector<Vec3d> poly;
-  for (double a : ang) poly.push_back(center + e1 * (size * std::cos(a)) + e2 * (size * aspect * std::sin(a)));
-  return poly;
-}
+using vlit::test::convex_polygon;
 
 std::vector<Vec3d> square(double half, double height, double cx = 0, double cy = 0) {  // facing down (-z)
   return {{cx - half, cy - half, height}, {cx - half, cy + half, height}, {cx + half, cy + half, height},

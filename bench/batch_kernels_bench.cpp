@@ -19,6 +19,7 @@
 // linear lights, and baked with bake_file (load / plan / light / encode / write), with the batch
 // kernels and with the scalar double path, on 1 and 2 threads.
 //
+// --only NAME-PART: only the kernels whose name contains it (e.g. "quad"), for profiling.
 // --quick: small sizes and short timings (seconds), for the ctest entry that proves it runs.
 #include <omp.h>
 
@@ -159,7 +160,8 @@ ShadeOptions diffuse_only() {
   return o;
 }
 
-void run_kernel(const KernelCase& kc, const PointSet& pts, const OpRates& ops, double min_seconds) {
+void run_kernel(const KernelCase& kc, const PointSet& pts, const OpRates& ops, double min_seconds, const std::string& only) {
+  if (std::string(kc.name).find(only) == std::string::npos) return;
   const ShadeOptions options = diffuse_only();
   const PreparedLight<double> light_d = prepare_light<double>(kc.light);
   const PreparedLight<float> light_f = prepare_light<float>(kc.light);
@@ -303,7 +305,7 @@ void write_lights(const std::string& path, double extent) {
 
 int main(int argc, char** argv) {
   bool quick = false;
-  std::string asset, out_dir = ".";
+  std::string asset, out_dir = ".", only;
   std::size_t vertices = 1000000;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -311,8 +313,9 @@ int main(int argc, char** argv) {
     else if (a == "--asset" && i + 1 < argc) asset = argv[++i];
     else if (a == "--out-dir" && i + 1 < argc) out_dir = argv[++i];
     else if (a == "--vertices" && i + 1 < argc) vertices = std::stoul(argv[++i]);
+    else if (a == "--only" && i + 1 < argc) only = argv[++i];
     else {
-      std::fprintf(stderr, "usage: batch_kernels_bench [--quick] [--asset GLTF] [--vertices N] [--out-dir DIR]\n");
+      std::fprintf(stderr, "usage: batch_kernels_bench [--quick] [--only KERNEL-NAME-PART] [--asset GLTF] [--vertices N] [--out-dir DIR]\n");
       return 2;
     }
   }
@@ -333,7 +336,7 @@ int main(int argc, char** argv) {
   };
   std::printf("| kernel | double 1T | double 2T | float 1T | float 2T | batch 1T | batch 2T | batch/double 1T | batch/double 2T | batch max rel.err | stiff lanes | limit 1T | 1T of limit | 2T of 2x limit |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-  for (const KernelCase& kc : cases) run_kernel(kc, pts, ops, min_seconds);
+  for (const KernelCase& kc : cases) run_kernel(kc, pts, ops, min_seconds, only);
   LightSource point, spot, sun;
   point.name = "point";
   point.position = {0.2, 0.1, 2};
@@ -343,9 +346,9 @@ int main(int argc, char** argv) {
   spot.cos_outer = std::cos(0.9);
   sun.type = LightType::kDirectional;
   sun.direction = normalize(Vec3d{0.3, 0.2, -1});
-  run_kernel({"point diffuse", point, {70, 4, 2}}, pts, ops, min_seconds);
-  run_kernel({"spot diffuse", spot, {100, 4, 2}}, pts, ops, min_seconds);
-  run_kernel({"directional diffuse", sun, {12, 0, 0}}, pts, ops, min_seconds);
+  run_kernel({"point diffuse", point, {70, 4, 2}}, pts, ops, min_seconds, only);
+  run_kernel({"spot diffuse", spot, {100, 4, 2}}, pts, ops, min_seconds, only);
+  run_kernel({"directional diffuse", sun, {12, 0, 0}}, pts, ops, min_seconds, only);
   std::printf("(M evaluations/s; T = threads; limit = per-lane operation counts x this machine's op rates measured above)\n\n");
 
   if (asset.empty()) return 0;

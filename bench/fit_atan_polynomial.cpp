@@ -3,16 +3,17 @@
 //   ./build/release/bench/fit_atan_polynomial 8
 //
 // atan(x) = x P(x^2) on [0, 1]: P (degree DEG in z = x^2) interpolates f(z) = atan(sqrt z)/sqrt z
-// at the DEG + 1 Chebyshev nodes of [0, 1] (near-minimax), computed in long double and converted
-// from the Chebyshev to the monomial basis for Horner evaluation. Prints the coefficients (z^0
-// first) and the maximum relative error of the float Horner evaluation against long-double atan
-// on 2e6 + 1 points of [0, 1].
+// at the DEG + 1 Chebyshev nodes of [0, 1] (near-minimax; bench/chebyshev_fit.h). Prints the
+// coefficients (z^0 first) and the maximum relative error of the float Horner evaluation against
+// long-double atan on 2e6 + 1 points of [0, 1].
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <vector>
 
-using LD = long double;
+#include "chebyshev_fit.h"
+
+using vlit::fit::LD;
 
 int main(int argc, char** argv) {
   const int deg = argc > 1 ? std::atoi(argv[1]) : 8;
@@ -22,28 +23,7 @@ int main(int argc, char** argv) {
   }
   const int n = deg + 1;
   auto f = [](LD z) { return z == 0 ? LD(1) : std::atan(std::sqrt(z)) / std::sqrt(z); };
-  // Chebyshev coefficients c_j of f in w = 2z - 1.
-  std::vector<LD> c(n, 0);
-  for (int j = 0; j < n; ++j) {
-    LD sum = 0;
-    for (int k = 0; k < n; ++k) {
-      const LD theta = M_PIl * (k + 0.5L) / n;
-      sum += f((std::cos(theta) + 1) / 2) * std::cos(j * theta);
-    }
-    c[j] = (j == 0 ? 1 : 2) * sum / n;
-  }
-  // T_j(2z - 1) as polynomials in z, by T_{j+1} = 2(2z - 1) T_j - T_{j-1}; accumulate Σ c_j T_j.
-  std::vector<LD> prev(n, 0), cur(n, 0), mono(n, 0);
-  prev[0] = 1;
-  if (n > 1) { cur[0] = -1; cur[1] = 2; }
-  for (int i = 0; i < n; ++i) mono[i] += c[0] * prev[i] + (n > 1 ? c[1] * cur[i] : 0);
-  for (int j = 2; j < n; ++j) {
-    std::vector<LD> next(n, 0);
-    for (int i = 0; i < n; ++i) next[i] = -2 * cur[i] - prev[i] + (i > 0 ? 4 * cur[i - 1] : 0);
-    for (int i = 0; i < n; ++i) mono[i] += c[j] * next[i];
-    prev = cur;
-    cur = next;
-  }
+  const std::vector<LD> mono = vlit::fit::chebyshev_interpolant(f, 0, 1, deg);
   for (int i = 0; i < n; ++i) std::printf("z^%d: %.9Le\n", i, mono[i]);
   double worst = 0;
   for (int i = 0; i <= 2000000; ++i) {

@@ -35,6 +35,7 @@
 
 #include "batch/batch_points.h"
 #include "batch/float_atan.h"
+#include "batch/float_log.h"
 
 namespace vlit {
 
@@ -43,7 +44,7 @@ struct LinearBatchLight {
   double u[3];      // unit direction Ld / |Ld|
   double length;    // |Ld| > 0
   float inv_length; // 1 / |Ld|
-  int falloff;      // 2 or 3
+  int falloff;      // 0, 1, 2 or 3
 };
 
 namespace batch_detail {
@@ -92,13 +93,21 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   const bool both_in = (c0 >= 0.f) & (c1 >= 0.f);
   const bool both_out = !both_in & (c0 <= 0.f) & (c1 <= 0.f);
   const bool in_plane = (c0 == 0.f) & (c1 == 0.f);
-  const float tc = both_in | both_out ? 0.f : c0 / (c0 - c1);
-  const float ta = both_in | (c0 > 0.f) ? 0.f : tc;
-  const float tb = both_in | (c0 <= 0.f) ? 1.f : tc;
-  const float sa = ta == 0.f ? s0 : s0 + ta * ell;
-  const float sb_raw = tb == 1.f ? s1 : s0 + tb * ell;
+  // A segment that crosses the tangent plane (c0, c1 of strictly opposite signs) is visible from
+  // Q0 to the crossing when c0 > 0, else from the crossing to Q1. The visible fraction of its length
+  // is c0/(c0 - c1) or c1/(c1 - c0) (no cancellation), and the crossing's s is -a/b (L.N = a + b s
+  // = 0; b = (c1 - c0)/|Ld| != 0), both with relative precision. The scalar kernel's s0 + t ell and
+  // (1 - t) ell carry an absolute error of a float epsilon, which in float is all of the interval's
+  // near end when the crossing lies within ~h of the foot of the perpendicular and h is small,
+  // and all of delta when the crossing is near Q1 ("foot just inside an end" in the tests).
+  const bool crossing = !(both_in | both_out);
+  const bool from_q0 = c0 > 0.f;
+  const float fraction = crossing ? (from_q0 ? c0 : c1) / (from_q0 ? c0 - c1 : c1 - c0) : 1.f;
+  const float s_cross = -a / (b != 0.f ? b : 1.f);
+  const float sa = crossing & !from_q0 ? s_cross : s0;
+  const float sb_raw = crossing & from_q0 ? s_cross : s1;
   const float sb0 = sb_raw > sa ? sb_raw : sa;
-  const float delta = (tb - ta) * ell;
+  const float delta = fraction * ell;
   const bool empty = both_out | in_plane | !(delta > 0.f) | !(scale > 0.f);
   // Mirror s -> -s so that sb > 0 (F even, G odd).
   const bool flip = sb0 <= 0.f;
@@ -109,7 +118,32 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   const float ra = std::sqrt(ra2), rb = std::sqrt(rb2);
   const float dd = delta * (lo + hi);
   float f, g;
-  if constexpr (kFalloff == 2) {
+  if constexpr (kFalloff == 0) {
+    g = dd / (ra + rb);
+    // F = asinh(sb/h) - asinh(sa/h) as log1p(w) (asinh y = log1p(y + y^2/(1 + sqrt(1 + y^2)))).
+    // Same sign: y = dd / (sb ra + sa rb). Foot inside: asinh(sb/h) + asinh(-sa/h) =
+    // log1p(wa + wb + wa wb) with wb = (sb + rb)/h - 1 = sb (1 + sb/(rb + h)) / h (rb - h = sb^2/(rb + h)),
+    // wa likewise with -sa and ra: sums of positive terms, no cancellation.
+    const float y = dd / (same_sign ? hi * ra + lo * rb : 1.f);
+    const float w_same = y + y * y / (1.f + std::sqrt(1.f + y * y));
+    const float hs = h > 0.f ? h : 1.f;
+    const float pb = hi * (1.f + hi / (rb + h)), pa = -lo * (1.f - lo / (ra + h));
+    const float w_inside = (pa + pb + pa * pb / hs) / hs;
+    f = log1p_float(same_sign ? w_same : w_inside);
+  } else if constexpr (kFalloff == 1) {
+    // G = ln(rb/ra) = log1p(dd / ra^2) / 2, from the ratio rb^2/ra^2 where dd/ra^2 is near -1.
+    g = 0.5f * log1p_or_log_ratio(dd / ra2, rb2 / ra2);
+    // F = (atan(sb/h) - atan(sa/h)) / h = atan2(h delta, X)/h, X = h^2 + sa sb; for X > 0 written
+    // (delta/X) atan(z)/z with z = h delta / X, which keeps its precision as h -> 0.
+    const float x = h2 + lo * hi, y = h * delta;
+    const bool x_pos = x > 0.f;
+    const float xs = x_pos ? x : 1.f;
+    const float z = y / xs;
+    const float zs = z < 1e-4f ? 1.f : z;
+    const float atan_over = z < 1e-4f ? 1.f - z * z / 3.f : atan2_upper(zs, 1.f) / zs;
+    const float hs = h > 0.f ? h : 1.f;
+    f = x_pos ? delta / xs * atan_over : atan2_upper(y, x) / hs;
+  } else if constexpr (kFalloff == 2) {
     const float rab = ra * rb;
     g = dd / (rab * (ra + rb));
     // Same sign: dd / (ra rb (sb ra + sa rb)); foot inside: (sb/rb - sa/ra) / h^2 =
@@ -132,10 +166,11 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   const float af = a * f, bg = b * g;
   const float sum = af + bg;
   const float mag = (af < 0.f ? -af : af) + (bg < 0.f ? -bg : bg);
-  // (a F + b G) / ell * scale^-n with ell = |Ld| / scale: the division by ell is a product with
-  // the per-light 1/|Ld|.
-  float scale_n = inv;
-  if constexpr (kFalloff == 3) scale_n *= inv;
+  // (a F + b G) / ell * scale^-n with ell = |Ld| / scale: scale^(1-n) times the per-light 1/|Ld|.
+  float scale_n = 1.f;
+  if constexpr (kFalloff == 0) scale_n = scale;
+  if constexpr (kFalloff == 2) scale_n = inv;
+  if constexpr (kFalloff == 3) scale_n = inv * inv;
   const float value = (sum > 0.f ? sum : 0.f) * scale_n * L.inv_length;
   const bool stiff = (!empty) & ((h < 1e-12f) | (ell < 1e-5f) | (mag > 16.f * (sum < 0.f ? -sum : sum)) |
                                 !(value < 3.0e38f));
@@ -161,11 +196,15 @@ inline void linear_diffuse_loop(const LinearBatchLight& light, const BatchPoints
 
 }  // namespace batch_detail
 
-// Diffuse of one linear light (falloff 2 or 3) at lanes [begin, end).
+// Diffuse of one linear light (falloff 0, 1, 2 or 3) at lanes [begin, end).
 inline void linear_diffuse_batch(const LinearBatchLight& light, const BatchPoints& pts, long begin, long end,
                                  const BatchOutput& out) {
-  if (light.falloff == 2) batch_detail::linear_diffuse_loop<2>(light, pts, begin, end, out);
-  else batch_detail::linear_diffuse_loop<3>(light, pts, begin, end, out);
+  switch (light.falloff) {
+    case 0: batch_detail::linear_diffuse_loop<0>(light, pts, begin, end, out); break;
+    case 1: batch_detail::linear_diffuse_loop<1>(light, pts, begin, end, out); break;
+    case 2: batch_detail::linear_diffuse_loop<2>(light, pts, begin, end, out); break;
+    default: batch_detail::linear_diffuse_loop<3>(light, pts, begin, end, out); break;
+  }
 }
 
 }  // namespace vlit

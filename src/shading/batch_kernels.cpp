@@ -54,7 +54,7 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
           const Vec3d ld = k.q1 - k.q0;
           const double len = length(ld);
           if (options.linear.force_quadrature) c.reason = "quadrature forced";
-          else if (k.falloff != 2 && k.falloff != 3) c.reason = "falloff other than 2 or 3";
+          else if (!is_integer_falloff(k.falloff)) c.reason = "non-integer falloff";
           else if (!(len > 0) || !std::isfinite(len)) c.reason = "zero-length segment";
           if (!c.reason.empty()) return;
           LinearBatchLight b;

@@ -2,9 +2,9 @@
 // prepared lights can use them.
 //
 // A light gets a batch kernel when only its diffuse is needed and its model has one: point, spot
-// and directional with integer falloff 0..3, linear with falloff 2 or 3 (closed forms), convex
-// area polygons. Everything else (specular, real or 0/1 falloff of a linear light, non-convex
-// polygons, disks) stays on the scalar double kernels; batch_kernel_for says why.
+// and directional with integer falloff 0..3, linear with integer falloff 0..3 (closed forms),
+// convex area polygons. Everything else (specular, real falloff, non-convex polygons, disks)
+// stays on the scalar double kernels; batch_kernel_for says why.
 //
 // evaluate_diffuse_batch is compiled for AVX-512, AVX2 and baseline x86-64 and picks the variant
 // for the running CPU once, at load time (GCC function multiversioning): the release build stays

@@ -7,9 +7,11 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "kernels/area/area_test_util.h"
 #include "support/test_rng.h"
 #include "batch/float_atan.h"
+#include "batch/float_log.h"
 #include "shading/batch_kernels.h"
 
 using namespace vlit;
@@ -139,8 +142,39 @@ TEST_CASE("float atan2 (float_atan.h) over the whole upper half plane") {
   CHECK(worst < 4e-7);
 }
 
-TEST_CASE("linear batch: random segments, falloff 2 and 3") {
-  for (double falloff : {2.0, 3.0}) {
+TEST_CASE("float log and log1p (float_log.h) over the whole positive float range") {
+  // Every 509th bit pattern of the positive finite floats (subnormals to the largest), and every
+  // float within 2^-9 of 1 (where ln x -> 0 and only the relative error means anything).
+  std::vector<float> xs;
+  for (std::uint32_t bits = 1; bits < 0x7f800000u; bits += 509) xs.push_back(std::bit_cast<float>(bits));
+  for (float x = 1.f - 1.f / 512; x <= 1.f + 1.f / 512; x = std::nextafter(x, 2.f)) xs.push_back(x);
+  xs.push_back(std::numeric_limits<float>::denorm_min());
+  xs.push_back(std::numeric_limits<float>::max());
+  double worst_log = 0, worst_log1p = 0;
+  for (const float x : xs) {
+    const double ref = std::log(double(x));
+    const double got = batch_detail::log_positive(x);
+    if (ref == 0) CHECK(got == 0);
+    else worst_log = std::max(worst_log, std::fabs(got - ref) / std::fabs(ref));
+    // ln(1 + x) for x > 0 and for -x in (-1, 0): the argument itself is exact, so log1p_float
+    // applies on the whole of (-1, inf).
+    const double ref_pos = std::log1p(double(x));
+    worst_log1p = std::max(worst_log1p, std::fabs(double(batch_detail::log1p_float(x)) - ref_pos) / ref_pos);
+    if (x < 1.f) {
+      const double ref_neg = std::log1p(-double(x));
+      worst_log1p = std::max(worst_log1p, std::fabs(double(batch_detail::log1p_float(-x)) - ref_neg) / -ref_neg);
+    }
+  }
+  MESSAGE("float log: max relative error " << worst_log << ", float log1p: " << worst_log1p << " over " << xs.size()
+                                           << " arguments");
+  CHECK(worst_log < 4e-7);
+  CHECK(worst_log1p < 4e-7);
+  // The ratio form for x near -1, where x has lost the digits of 1 + x: ln(1 + x) from the ratio.
+  CHECK(std::fabs(batch_detail::log1p_or_log_ratio(-1.f + 1e-7f, 1e-7f * 1.25f) - std::log(1.25e-7)) < 4e-7 * 16);
+}
+
+TEST_CASE("linear batch: random segments, falloff 0..3") {
+  for (double falloff : {0.0, 1.0, 2.0, 3.0}) {
     Rng rng(2024 + uint64_t(falloff));
     Points pts;
     std::vector<LightSource> lights;
@@ -153,7 +187,8 @@ TEST_CASE("linear batch: random segments, falloff 2 and 3") {
       const Vec3d n = normalize(normalize(mid - p) + rng.unit() * 0.9);
       pts.add(p, n);
     }
-    const Comparison c = compare(falloff == 2 ? "linear n=2 random" : "linear n=3 random", linear_source(q0, q1, falloff), pts);
+    const std::string what = "linear n=" + std::to_string(int(falloff)) + " random";
+    const Comparison c = compare(what.c_str(), linear_source(q0, q1, falloff), pts);
     CHECK(c.worst <= kFloatBar);
     CHECK(double(c.flagged) < 0.05 * double(c.lanes));  // the batch kernel does the work
   }
@@ -165,14 +200,15 @@ TEST_CASE("linear batch: a floor under a tube (the benchmark's set)") {
   for (int i = 0; i < 8192; ++i)
     pts.add({rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-0.2, 0.2)},
             {rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), 1});
-  for (double falloff : {2.0, 3.0}) {
-    const Comparison c = compare("linear floor", linear_source({-1, -0.3, 1.5}, {1, 0.3, 1.6}, falloff), pts);
+  for (double falloff : {0.0, 1.0, 2.0, 3.0}) {
+    const std::string what = "linear n=" + std::to_string(int(falloff)) + " floor";
+    const Comparison c = compare(what.c_str(), linear_source({-1, -0.3, 1.5}, {1, 0.3, 1.6}, falloff), pts);
     CHECK(c.worst <= kFloatBar);
   }
 }
 
 TEST_CASE("linear batch: stiff cases") {
-  for (double falloff : {2.0, 3.0}) {
+  for (double falloff : {0.0, 1.0, 2.0, 3.0}) {
     CAPTURE(falloff);
     Points pts;
     const Vec3d q0{-1, 0, 1}, q1{1, 0, 1};
@@ -212,6 +248,17 @@ TEST_CASE("linear batch: stiff cases") {
       for (int i = 0; i < 8; ++i) pts.add(Vec3d{0.2 * i, 0.3, 0} + Vec3d{1e4, -1e4, 1e4}, {0.1, 0, 1});
       const Comparison c = compare("linear stiff offset", far, pts);
       CHECK(c.flagged == 0);  // the double set-up keeps the offset harmless
+    }
+    SUBCASE("foot 1e-4 inside an end, h = 1e-9 .. 1e-2 from the line") {
+      for (double h = 1e-9; h <= 1e-2; h *= 10) {
+        // The segment crosses the tangent plane ~3h-5h from the foot: the visible interval's near
+        // end must keep its relative precision (linear_diffuse_batch.h, horizon clipping).
+        pts.add({1 - 1e-4, h, 1}, {0.2, -1, 0.1});
+        pts.add({1 - 1e-4, 0, 1 - h}, {0.3, 0, 1});
+      }
+      for (double h = 1e-4; h <= 0.1; h *= 10)  // whole segment visible, rb/ra ~ h: n = 1 takes G from the ratio
+        pts.add({1 - 1e-4, 0, 1 - h}, {-0.3, 0, 1});
+      compare("linear stiff foot near an end", tube, pts);
     }
     SUBCASE("P at an endpoint and on the segment") {
       pts.add(q0, {1, 0.2, 1});  // the segment crosses the tangent plane at P
@@ -334,7 +381,11 @@ TEST_CASE("batch kernel choice: specular, falloff and non-convex polygons stay s
   ShadeOptions with_spec;
   CHECK_FALSE(batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, 2)), with_spec).light);
   CHECK(batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, 2)), diffuse_only()).light);
-  CHECK_FALSE(batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, 1.5)), diffuse_only()).light);
+  for (double falloff : {0.0, 1.0, 2.0, 3.0})
+    CHECK(batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, falloff)), diffuse_only()).light);
+  const BatchChoice real_falloff = batch_kernel_for(prepare_light<double>(linear_source({0, 0, 1}, {1, 0, 1}, 1.5)), diffuse_only());
+  CHECK_FALSE(real_falloff.light);
+  CHECK(real_falloff.reason == "non-integer falloff");
   const std::vector<Vec3d> l_shape{{0, 0, 1}, {0, 2, 1}, {1, 2, 1}, {1, 1, 1}, {2, 1, 1}, {2, 0, 1}};  // CW seen from below
   CHECK_FALSE(batch_kernel_for(prepare_light<double>(area_source(l_shape)), diffuse_only()).light);
   CHECK(batch_kernel_for(prepare_light<double>(area_source(square(0.5, 1))), diffuse_only()).light);
@@ -353,7 +404,8 @@ TEST_CASE("batch kernels: a lane's bits do not depend on how the lanes are split
   spot.type = LightType::kSpot;
   spot.name = "spot";
   spot.position = {0, 0, 2};
-  for (const LightSource& source : {linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 2), linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 3),
+  for (const LightSource& source : {linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 0), linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 1),
+                                    linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 2), linear_source({-1, 0, 1}, {1, 0.3, 1.2}, 3),
                                     area_source(square(0.7, 1.5)), spot}) {
     CAPTURE(int(source.type));
     const BatchChoice choice = batch_kernel_for(prepare_light<double>(source), diffuse_only());

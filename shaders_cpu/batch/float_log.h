@@ -48,13 +48,15 @@ inline float log_positive(float x) {
 // x <= -1/2 (there 1 + x in float is exact, but x itself may carry an absolute error that is large
 // relative to 1 + x).
 inline float log1p_or_log_ratio(float x, float ratio) {
+  // Selects between floats only: a select between two masks stops GCC 12's vectoriser.
   const bool near_one = x > -0.5f;
   const float u = near_one ? 1.f + x : ratio;
   const float d = u - 1.f;  // exact (Sterbenz) for u in [1/2, 2]; u's rounding error shows up here
-  const bool rounds_to_one = near_one & (d == 0.f);
-  const float correction = near_one ? x / (rounds_to_one ? 1.f : d) : 1.f;
+  const float d_safe = d == 0.f ? 1.f : d;
+  const float correction = near_one ? x / d_safe : 1.f;
   const float r = log_positive(u) * correction;
-  return rounds_to_one ? x : r;
+  const float at_one = near_one ? x : 0.f;  // u = 1: ln(1 + x) = x within rounding (or ln ratio = 0)
+  return d == 0.f ? at_one : r;
 }
 
 // ln(1 + x) for x > -1/2 (and for x > -1 when x is exact).

@@ -1,4 +1,4 @@
-// Linear (tube) light, diffuse, float batch: the closed forms for falloff n = 2 and n = 3 over
+// Linear (tube) light, diffuse, float batch: the closed forms for falloff n = 0, 1, 2 and 3 over
 // structure-of-arrays points.
 //
 // What it computes: Id = ∫_0^1 max(0, L(t).N) / |L(t)|^(n+1) dt (Picott 1992 eq. 4; MISSION.md
@@ -9,6 +9,10 @@
 // h^2 + s^2, L.N = a + b s) and its cancellation-free antiderivative differences
 // (linear_diffuse_closed.h, errata E1-E4 in docs/linear-lights.md):
 //   Id = (a F_n + b G_n) / |Ld|,  over the visible interval [sa, sb] of length delta;
+//   n = 0: G = dd / (ra + rb),  F = asinh(sb/h) - asinh(sa/h) = log1p(w): w from
+//          y = dd / (sb ra + sa rb) (sa, sb same sign) or from both ends' (s + r)/h - 1 (foot inside);
+//   n = 1: G = log1p(dd / ra^2) / 2 (or ln(rb^2/ra^2) / 2 when dd/ra^2 <= -1/2),
+//          F = (delta/X) atan(z)/z (X > 0) or atan2(Y, X)/h;
 //   n = 2: G = dd / (ra rb (ra + rb)),  F = dd / (ra rb (sb ra + sa rb)) (sa, sb same sign)
 //                                       or (sb/rb - sa/ra) / h^2 (foot inside), dd = delta (sa + sb);
 //   n = 3: G = dd / (2 ra^2 rb^2),  F = delta/(2X) [delta^2 φ(z)/X^2 + 2/(X(1+z^2))] (X = h^2 + sa sb
@@ -19,15 +23,25 @@
 // Precision: per lane, L0 = Q0 - P and L1 = Q1 - P, their projections s0 = L0.u, s1 = L1.u, the
 // perpendicular H = L0 - u s0, a = H.N, b = u.N and the horizon values L0.N, L1.N are formed in double (the
 // collinear trap: h = |H| keeps full relative precision as P approaches the line); everything
-// after is float, in lengths divided by scale = max(|L0|, |L1|) as in linear_geometry.h.
+// after is float, in lengths divided by scale = max(|L0|, |L1|) as in linear_geometry.h. Where the
+// segment crosses the tangent plane, the crossing is s = -a/b and the visible fraction c0/(c0 - c1)
+// or c1/(c1 - c0), not s0 + t ell and (1 - t) ell as in linear_geometry.h (see the clipping below).
+// ln and atan are float polynomials (float_log.h, float_atan.h): no library call, so GCC 12
+// vectorises the loop for every n and every target_clones variant (checked with
+// -fopt-info-vec-all on src/shading/batch_kernels.cpp: 12 "loop vectorized" at linear_diffuse_loop).
 //
 // Stiff lanes (flagged for the scalar double kernel; tests/kernels/batch/batch_kernels_test.cpp
-// "linear batch: stiff cases"): P at an endpoint or within 1e-12 scale of the line (h^2 would
-// underflow float; includes P on the segment), a segment shorter than 1e-5 scale (the point-light
-// limit), and cancellation: |a F| + |b G| > 16 |a F + b G| (a light almost edge-on to the tangent
-// plane, where float rounding of the two terms would exceed the 1e-5 bar).
-// Measured: max relative error of unflagged lanes 5.6e-7 (random set), 2.7e-6 (floor under a tube);
-// `./build/release/tests/batch_kernel_tests -s -tc='linear*'`.
+// "linear batch: stiff cases"), the same rule for every n: P at an endpoint or within 1e-12 scale
+// of the line (h^2 would underflow float; includes P on the segment, where n = 0 has a finite value
+// the scalar kernel computes), a segment shorter than 1e-5 scale (the point-light limit), and
+// cancellation: |a F| + |b G| > 16 |a F + b G| (a light almost edge-on to the tangent plane, where
+// float rounding of the two terms would exceed the 1e-5 bar). The n = 0 and n = 1 forms add no
+// cancellation of their own: w and the log1p argument are sums of positive terms or exact
+// differences, and G's dd = delta (sa + sb) cancels only where the whole segment is visible
+// and a F dominates.
+// Measured max relative error of unflagged lanes, n = 0 / 1 / 2 / 3: random set 3.9e-7 / 3.8e-7 /
+// 4.6e-7 / 7.0e-7, floor under a tube 2.1e-6 / 2.9e-6 / 1.7e-6 / 2.5e-6 (about 2% of its lanes
+// flagged), stiff cases <= 3.1e-7; `./build/release/tests/batch_kernel_tests -s -tc='linear*'`.
 // Measured accuracy against the double scalar kernel: docs/performance.md, test above.
 #pragma once
 
@@ -140,7 +154,7 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
     const float xs = x_pos ? x : 1.f;
     const float z = y / xs;
     const float zs = z < 1e-4f ? 1.f : z;
-    const float atan_over = z < 1e-4f ? 1.f - z * z / 3.f : atan2_upper(zs, 1.f) / zs;
+    const float atan_over = z < 1e-4f ? 1.f - z * z * (1.f / 3.f) : atan2_upper(zs, 1.f) / zs;
     const float hs = h > 0.f ? h : 1.f;
     f = x_pos ? delta / xs * atan_over : atan2_upper(y, x) / hs;
   } else if constexpr (kFalloff == 2) {

@@ -103,7 +103,7 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   const float s0 = float(s0d) * inv, s1 = float(s1d) * inv;
   const float ell = float(L.length) * inv;
   const float c0 = float(c0d), c1 = float(c1d);
-  // Horizon clipping in t from the endpoint values (linear_geometry.h).
+  // Horizon clipping from the endpoint values L0.N, L1.N (linear_geometry.h).
   const bool both_in = (c0 >= 0.f) & (c1 >= 0.f);
   const bool both_out = !both_in & (c0 <= 0.f) & (c1 <= 0.f);
   const bool in_plane = (c0 == 0.f) & (c1 == 0.f);
@@ -113,7 +113,8 @@ inline void linear_diffuse_lane(const LinearBatchLight& L, double px, double py,
   // = 0; b = (c1 - c0)/|Ld| != 0), both with relative precision. The scalar kernel's s0 + t ell and
   // (1 - t) ell carry an absolute error of a float epsilon, which in float is all of the interval's
   // near end when the crossing lies within ~h of the foot of the perpendicular and h is small,
-  // and all of delta when the crossing is near Q1 ("foot just inside an end" in the tests).
+  // and all of delta when the crossing is near Q1 (test "linear batch: stiff cases", "foot 1e-4
+  // inside an end").
   const bool crossing = !(both_in | both_out);
   const bool from_q0 = c0 > 0.f;
   const float fraction = crossing ? (from_q0 ? c0 : c1) / (from_q0 ? c0 - c1 : c1 - c0) : 1.f;

@@ -73,10 +73,10 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
           b.center[0] = k.center.x; b.center[1] = k.center.y; b.center[2] = k.center.z;
           b.normal[0] = k.normal.x; b.normal[1] = k.normal.y; b.normal[2] = k.normal.z;
           for (int i = 0; i < k.count; ++i) {
-            b.d[i][0] = float(k.d[i].x); b.d[i][1] = float(k.d[i].y); b.d[i][2] = float(k.d[i].z);
+            b.d[i][0] = k.d[i].x; b.d[i][1] = k.d[i].y; b.d[i][2] = k.d[i].z;
           }
           b.count = k.count;
-          b.radius = float(k.radius);
+          b.radius = k.radius;
           b.two_sided = k.two_sided;
           c.light = b;
         } else {

@@ -389,6 +389,87 @@ TEST_CASE("area batch: lanes computed in double") {
   }
 }
 
+LightSource disk_source(const Vec3d& center, const Vec3d& normal, double radius, bool two_sided = false) {
+  LightSource l;
+  l.type = LightType::kDisk;
+  l.name = "disk";
+  l.center = center;
+  l.normal = normal;
+  l.radius = radius;
+  l.two_sided = two_sided;
+  return l;
+}
+
+// Disk lanes are computed in double (disk_diffuse_batch.h): compare() checks each against the
+// scalar double kernel (closed form and arc, itself checked against 2D quadrature in
+// tests/kernels/area/disk_test.cpp) to the float rounding of the result; lanes whose horizon cuts
+// the disk are flagged and carry 0.
+TEST_CASE("disk batch: random disks and points, one- and two-sided") {
+  Rng rng(909);
+  long flagged = 0, lanes = 0, in_double = 0;
+  for (int l = 0; l < 16; ++l) {
+    const Vec3d center{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(1, 3)};
+    const Vec3d normal = normalize(Vec3d{rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), -1});
+    Points pts;
+    for (int i = 0; i < 512; ++i) {
+      const Vec3d p{rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-0.5, 0.5)};
+      pts.add(p, normalize(normalize(center - p) + rng.unit() * 0.9));
+    }
+    const std::string what = "disk random " + std::to_string(l);
+    const Comparison c = compare(what.c_str(), disk_source(center, normal, rng.log_uniform(0.05, 2), l % 4 == 0), pts);
+    flagged += c.flagged;
+    in_double += c.in_double;
+    lanes += c.lanes;
+  }
+  MESSAGE("disk random: " << in_double << " of " << lanes << " lanes computed in double, " << flagged << " flagged (horizon cuts the disk)");
+  CHECK(in_double + flagged == lanes);
+  CHECK(flagged > 0);
+  CHECK(double(flagged) < 0.3 * double(lanes));
+}
+
+TEST_CASE("disk batch: stiff cases") {
+  Points pts;
+  const LightSource unit_disk = disk_source({0, 0, 1}, {0, 0, -1}, 1);
+  SUBCASE("on the axis, near and far") {
+    for (double h : {1e-6, 1e-3, 1.0, 1e3, 1e6}) pts.add({0, 0, 1 - h}, {0, 0, 1});
+    CHECK(compare("disk stiff axis", unit_disk, pts).in_double == 5);
+  }
+  SUBCASE("near the rim, inside and outside, 1e-4 below the plane (X + s rearranged when X < 0)") {
+    for (double r : {0.999, 0.9999, 1.0, 1.0001, 1.001, 1.1, 3.0}) pts.add({r, 0, 1 - 1e-4}, {0, 0, 1});
+    CHECK(compare("disk stiff rim", unit_disk, pts).in_double == 7);
+  }
+  SUBCASE("outside the rim, 1e-7 below the plane: X + s cancels to 1e-14 of X unless rearranged") {
+    for (double r : {1.5, 2.0, 3.0, 10.0}) pts.add({r, 0, 1 - 1e-7}, {0, 0, 1});
+    CHECK(compare("disk stiff outside rim", unit_disk, pts).in_double == 4);
+  }
+  SUBCASE("in the disk's plane, behind a one-sided disk, the back of a two-sided one") {
+    pts.add({3, 0, 1}, {-1, 0, 0});
+    pts.add({0.2, 0.1, 2}, {0, 0, -1});
+    pts.add({0.2, 0.1, 1.5}, {0.1, 0, -1});
+    compare("disk stiff behind", unit_disk, pts);
+    compare("disk stiff two-sided back", disk_source({0, 0, 1}, {0, 0, -1}, 1, true), pts);
+  }
+  SUBCASE("tiny (1e-6), huge (1e6), far (1e7), offset 1e4") {
+    pts.add({0.3, 0.2, 0}, {0.1, 0.2, 1});
+    pts.add({1e-7, 0, 0.5}, {0, 0.3, 1});
+    compare("disk stiff tiny", disk_source({0, 0, 1}, {0, 0, -1}, 1e-6), pts);
+    compare("disk stiff huge", disk_source({1e5, 0, 1}, {0, 0, -1}, 1e6), pts);
+    compare("disk stiff far", disk_source({0, 0, 1e7}, {0.1, 0, -1}, 1), pts);
+    Points offset;
+    const Vec3d o{1e4, -1e4, 1e4};
+    for (int i = 0; i < 8; ++i) offset.add(Vec3d{0.3 * i - 1, 0.1, 0} + o, {0.1, 0, 1});
+    compare("disk stiff offset", disk_source(Vec3d{0, 0, 1} + o, {0, 0, -1}, 0.5), offset);
+  }
+  SUBCASE("grazing: the disk just above the horizon, and cut by it (flagged)") {
+    pts.add({0, 0, 0}, {1, 0, 1e-9});   // the disk sits right on top: horizon through the axis
+    pts.add({5, 0, 0}, {-0.2, 0, 1});    // far off to the side, the disk barely above the horizon
+    pts.add({5, 0, 0}, {-0.19, 0, 1});   // just above it on the other side
+    pts.add({0, 0, 0}, {1, 0, 0.5});     // cut
+    const Comparison c = compare("disk stiff grazing", unit_disk, pts);
+    CHECK(c.flagged >= 1);
+  }
+}
+
 TEST_CASE("punctual batch: point, spot and directional, falloff 0..3, range window") {
   Rng rng(5);
   Points pts;

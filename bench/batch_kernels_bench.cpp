@@ -7,11 +7,13 @@
 // Part 1, kernels: vertex x light evaluations per second of each diffuse kernel, three ways:
 // the scalar double kernel (the bake's path before the batch kernels), the same kernel
 // instantiated in float, and the float SIMD batch kernel (stiff lanes recomputed in double, as
-// in the bake). Each on one thread and on two. The shading points are a bake-like set: a floor
+// in the bake: by the scalar double kernel, or inside the area kernel by its own double lanes).
+// Each on one thread and on two. The shading points are a bake-like set: a floor
 // of 2^16 points on a jittered grid in row order (normals tilted up to ~35 degrees) under the light. Also printed: the batch
 // kernel's max relative error against the double kernel on the same points, the fraction of lanes
-// it flags as stiff, and a machine limit: the kernel's per-lane operation counts (divisions and
-// square roots counted apart; counted in the source, see docs/performance.md) times this
+// that are stiff (sent to the scalar double kernel / computed by the kernel's double lanes), and a
+// machine limit: the kernel's per-lane float operation counts (divisions and square roots counted
+// apart; counted in the source, see docs/performance.md; the double lanes are not in it) times this
 // machine's measured throughput of each kind of operation in the same vector code.
 //
 // Part 2, end-to-end: the asset is instanced on a grid until it has --vertices vertices (default
@@ -173,7 +175,7 @@ void run_kernel(const KernelCase& kc, const PointSet& pts, const OpRates& ops, d
   const long n = pts.size();
   std::vector<double> out_d(n);
   std::vector<float> out_f(n), out_b(n);
-  std::vector<std::uint8_t> stiff(n);
+  std::vector<std::uint8_t> stiff(n), in_double(n);
   const BatchPoints bp{pts.px.data(), pts.py.data(), pts.pz.data(), pts.nx.data(), pts.ny.data(), pts.nz.data()};
   auto scalar_double = [&] {
     std::visit([&](const auto& k) {
@@ -188,11 +190,11 @@ void run_kernel(const KernelCase& kc, const PointSet& pts, const OpRates& ops, d
     }, light_f.kernel);
   };
   auto batch = [&] {
-    constexpr long kBlock = 256;
+    constexpr long kBlock = 1024;  // as the bake (src/bake/batch_lighting.cpp)
 #pragma omp parallel for schedule(static)
     for (long b = 0; b < (n + kBlock - 1) / kBlock; ++b) {
       const long begin = b * kBlock, end = std::min(n, begin + kBlock);
-      evaluate_diffuse_batch(*choice.light, bp, begin, end, BatchOutput{out_b.data(), stiff.data()});
+      evaluate_diffuse_batch(*choice.light, bp, begin, end, BatchOutput{out_b.data(), stiff.data(), in_double.data()});
       for (long v = begin; v < end; ++v)
         if (stiff[v]) out_b[v] = float(shade(light_d, pts.sp_d[v], options).diffuse);
     }
@@ -208,16 +210,17 @@ void run_kernel(const KernelCase& kc, const PointSet& pts, const OpRates& ops, d
   batch();
   scalar_double();
   double max_ref = 0, worst = 0;
-  long flagged = 0;
+  long flagged = 0, doubled = 0;
   for (long v = 0; v < n; ++v) max_ref = std::max(max_ref, out_d[v]);
   for (long v = 0; v < n; ++v) {
     flagged += stiff[v];
+    doubled += in_double[v];
     worst = std::max(worst, std::fabs(out_b[v] - out_d[v]) / std::max(std::fabs(out_d[v]), 1e-12 * max_ref));
   }
   const double limit = limit_rate(kc.ops, ops);  // one thread
-  std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1fx | %.1fx | %.2g | %.1f%% | %.0f | %.0f%% | %.0f%% |\n", kc.name,
+  std::printf("| %s | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1fx | %.1fx | %.2g | %.1f%% / %.1f%% | %.0f | %.0f%% | %.0f%% |\n", kc.name,
               r[0][0] / 1e6, r[0][1] / 1e6, r[1][0] / 1e6, r[1][1] / 1e6, r[2][0] / 1e6, r[2][1] / 1e6, r[2][0] / r[0][0],
-              r[2][1] / r[0][1], worst, 100.0 * double(flagged) / double(n), limit / 1e6, 100 * r[2][0] / limit,
+              r[2][1] / r[0][1], worst, 100.0 * double(flagged) / double(n), 100.0 * double(doubled) / double(n), limit / 1e6, 100 * r[2][0] / limit,
               100 * r[2][1] / (2 * limit));
   std::fflush(stdout);
 }
@@ -237,6 +240,16 @@ LightSource polygon(std::vector<Vec3d> poly) {
   l.type = LightType::kArea;
   l.name = "panel";
   l.polygon = std::move(poly);
+  return l;
+}
+
+LightSource disk(const Vec3d& center, const Vec3d& normal, double radius) {
+  LightSource l;
+  l.type = LightType::kDisk;
+  l.name = "disk";
+  l.center = center;
+  l.normal = normal;
+  l.radius = radius;
   return l;
 }
 
@@ -338,8 +351,10 @@ int main(int argc, char** argv) {
       {"linear diffuse n=3", linear(3), {327, 16, 4}},
       {"quad diffuse", polygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2.1}, {0.5, -0.5, 2.1}}), {1020, 19, 10}},
       {"triangle diffuse", polygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.0, 2.1}}), {830, 15, 8}},
+      // the quad's area and tilt; lanes in double (counted twice), arcs flagged to the scalar kernel
+      {"disk diffuse", disk({0, 0, 2.05}, {0.1, 0, -1}, 0.5642), {190, 6, 8}},
   };
-  std::printf("| kernel | double 1T | double 2T | float 1T | float 2T | batch 1T | batch 2T | batch/double 1T | batch/double 2T | batch max rel.err | stiff lanes | limit 1T | 1T of limit | 2T of 2x limit |\n");
+  std::printf("| kernel | double 1T | double 2T | float 1T | float 2T | batch 1T | batch 2T | batch/double 1T | batch/double 2T | batch max rel.err | stiff lanes: scalar / in-kernel double | limit 1T | 1T of limit | 2T of 2x limit |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const KernelCase& kc : cases) run_kernel(kc, pts, ops, min_seconds, only);
   LightSource point, spot, sun;

@@ -22,7 +22,7 @@ std::vector<LD> chebyshev_interpolant(F f, LD a, LD b, int deg) {
     LD sum = 0;
     for (int k = 0; k < n; ++k) {
       const LD theta = M_PIl * (k + 0.5L) / n;
-      sum += f((std::cos(theta) - beta) / alpha) * std::cos(j * theta);
+      sum += f(a + (std::cos(theta) + 1) / 2 * (b - a)) * std::cos(j * theta);
     }
     c[j] = (j == 0 ? 1 : 2) * sum / n;
   }

@@ -31,10 +31,13 @@ struct BatchPoints {
 
 // Per-lane outputs: the diffuse response for unit intensity (kd = 1, conventions.h) and a flag
 // set when the lane is outside the kernel's float accuracy domain (the caller recomputes flagged
-// lanes with the scalar double kernel; each kernel file says when it flags).
+// lanes with the scalar double kernel; each kernel file says when it flags). Optional: kernels
+// that recompute their stiff lanes in double themselves (area_diffuse_batch.h) mark them 1 in
+// in_double (0 elsewhere), for tests and benchmarks; other kernels leave it untouched.
 struct BatchOutput {
   float* diffuse = nullptr;
   std::uint8_t* stiff = nullptr;
+  std::uint8_t* in_double = nullptr;
 };
 
 }  // namespace vlit

@@ -24,7 +24,7 @@ void BatchChunk::fill(const ShadingPoint<double>* points, long begin, long end) 
 void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,
                              const ShadingPoint<double>* points, long count, Vec3d* diffuse) {
   if (lights.empty() || count <= 0) return;
-  constexpr long kBlock = 256;  // lanes per task: whole blocks, so the split never changes a lane's code path
+  constexpr long kBlock = 1024;  // lanes per task (whole blocks: the split never changes a lane's code path)
   const long blocks = (count + kBlock - 1) / kBlock;
   chunk.resize(count);
   const BatchPoints pts = chunk.points();

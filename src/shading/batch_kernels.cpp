@@ -73,14 +73,26 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
           b.center[0] = k.center.x; b.center[1] = k.center.y; b.center[2] = k.center.z;
           b.normal[0] = k.normal.x; b.normal[1] = k.normal.y; b.normal[2] = k.normal.z;
           for (int i = 0; i < k.count; ++i) {
-            b.d[i][0] = float(k.d[i].x); b.d[i][1] = float(k.d[i].y); b.d[i][2] = float(k.d[i].z);
+            b.d[i][0] = k.d[i].x; b.d[i][1] = k.d[i].y; b.d[i][2] = k.d[i].z;
           }
           b.count = k.count;
-          b.radius = float(k.radius);
+          b.radius = k.radius;
           b.two_sided = k.two_sided;
           c.light = b;
+        } else if constexpr (std::is_same_v<K, PreparedDiskLight<double>>) {
+          const PreparedAreaLight<double>& frame = k.inscribed;  // centre, unit normal, u x v = normal
+          DiskBatchLight b{};
+          for (int i = 0; i < 3; ++i) {
+            b.center[i] = frame.center[i];
+            b.normal[i] = frame.normal[i];
+            b.u[i] = frame.u[i];
+            b.v[i] = frame.v[i];
+          }
+          b.radius = k.radius;
+          b.two_sided = frame.two_sided;
+          c.light = b;
         } else {
-          c.reason = "no batch kernel for this model";
+          static_assert(!sizeof(K*), "every light model has a batch kernel or a reason above");
         }
       },
       light.kernel);
@@ -100,6 +112,7 @@ void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, 
   if (const auto* p = std::get_if<PunctualBatchLight>(&light)) punctual_diffuse_batch(*p, points, begin, end, out);
   else if (const auto* l = std::get_if<LinearBatchLight>(&light)) linear_diffuse_batch(*l, points, begin, end, out);
   else if (const auto* a = std::get_if<AreaBatchLight>(&light)) area_diffuse_batch(*a, points, begin, end, out);
+  else if (const auto* d = std::get_if<DiskBatchLight>(&light)) disk_diffuse_batch(*d, points, begin, end, out);
 }
 
 const char* batch_instruction_set() {

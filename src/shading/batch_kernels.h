@@ -3,8 +3,9 @@
 //
 // A light gets a batch kernel when only its diffuse is needed and its model has one: point, spot
 // and directional with integer falloff 0..3, linear with integer falloff 0..3 (closed forms),
-// convex area polygons. Everything else (specular, real falloff, non-convex polygons, disks)
-// stays on the scalar double kernels; batch_kernel_for says why.
+// convex area polygons, disks (lanes whose horizon cuts the disk are flagged). Everything else
+// (specular, real falloff, non-convex polygons) stays on the scalar double kernels;
+// batch_kernel_for says why.
 //
 // evaluate_diffuse_batch is compiled for AVX-512, AVX2 and baseline x86-64 and picks the variant
 // for the running CPU once, at load time (GCC function multiversioning): the release build stays
@@ -18,13 +19,14 @@
 
 #include "batch/area_diffuse_batch.h"
 #include "batch/batch_points.h"
+#include "batch/disk_diffuse_batch.h"
 #include "batch/linear_diffuse_batch.h"
 #include "batch/punctual_diffuse_batch.h"
 #include "shading/prepared_light.h"
 
 namespace vlit {
 
-using BatchLight = std::variant<PunctualBatchLight, LinearBatchLight, AreaBatchLight>;
+using BatchLight = std::variant<PunctualBatchLight, LinearBatchLight, AreaBatchLight, DiskBatchLight>;
 
 struct BatchChoice {
   std::optional<BatchLight> light;  // empty: the scalar double kernel runs

@@ -18,6 +18,7 @@
 
 #include "kernels/area/area_test_util.h"
 #include "support/test_rng.h"
+#include "batch/double_atan.h"
 #include "batch/float_atan.h"
 #include "batch/float_log.h"
 #include "shading/batch_kernels.h"
@@ -28,6 +29,8 @@ namespace {
 
 constexpr double kFloatBar = 1e-5;
 constexpr double kFloorFraction = 1e-12;
+constexpr double kDoubleLaneBar = 1e-10;  // double lanes vs the double kernel, beyond float rounding
+constexpr double kDoubleFloorFraction = 1e-9;
 
 using vlit::test::Rng;
 
@@ -47,6 +50,8 @@ struct Points {
 struct Comparison {
   double worst = 0;      // max relative error over unflagged lanes
   long flagged = 0, lanes = 0;
+  long in_double = 0;          // lanes the kernel computed in double itself (area lights)
+  double worst_in_double = 0;  // their max relative error beyond the float rounding of the result
   double worst_combined = 0;  // after recomputing the flagged lanes in double (as the bake does)
 };
 
@@ -64,9 +69,9 @@ Comparison compare(const char* what, const LightSource& source, const Points& pt
   REQUIRE_MESSAGE(choice.light.has_value(), std::string(what) << ": no batch kernel: " << choice.reason);
   const long n = long(pts.px.size());
   std::vector<float> value(n);
-  std::vector<std::uint8_t> stiff(n);
+  std::vector<std::uint8_t> stiff(n), in_double(n);
   const BatchPoints bp{pts.px.data(), pts.py.data(), pts.pz.data(), pts.nx.data(), pts.ny.data(), pts.nz.data()};
-  evaluate_diffuse_batch(*choice.light, bp, 0, n, BatchOutput{value.data(), stiff.data()});
+  evaluate_diffuse_batch(*choice.light, bp, 0, n, BatchOutput{value.data(), stiff.data(), in_double.data()});
   std::vector<double> ref(n);
   double max_ref = 0;
   for (long i = 0; i < n; ++i) {
@@ -86,6 +91,20 @@ Comparison compare(const char* what, const LightSource& source, const Points& pt
       continue;
     }
     const double err = floor > 0 ? std::fabs(double(value[i]) - ref[i]) / floor : std::fabs(double(value[i]));
+    if (in_double[i]) {
+      // The kernel's double lanes do the scalar double kernel's arithmetic: they agree to the
+      // float rounding of the stored value (half an ulp, 2^-24) plus double-level differences.
+      // Values below kDoubleFloorFraction of the set's largest (grazing lanes, whose terms cancel
+      // to 1e-20 even in double) are compared absolutely at kDoubleLaneBar of that floor.
+      ++c.in_double;
+      const double floor_d = std::max(std::fabs(ref[i]), kDoubleFloorFraction * max_ref);
+      const double beyond = std::max(0.0, (std::fabs(double(value[i]) - ref[i]) - 0x1p-24 * std::fabs(ref[i])) / floor_d);
+      c.worst_in_double = std::max(c.worst_in_double, beyond);
+      if (!(beyond <= kDoubleLaneBar))
+        FAIL_CHECK(std::string(what) << " double lane " << i << ": batch " << value[i] << " double " << ref[i] << " rel.err " << err);
+      c.worst_combined = std::max(c.worst_combined, err);
+      continue;
+    }
     c.worst = std::max(c.worst, err);
     c.worst_combined = std::max(c.worst_combined, err);
     if (!(err <= kFloatBar))
@@ -93,8 +112,9 @@ Comparison compare(const char* what, const LightSource& source, const Points& pt
                       << " P=(" << pts.px[i] << "," << pts.py[i] << "," << pts.pz[i] << ") N=(" << pts.nx[i] << ","
                       << pts.ny[i] << "," << pts.nz[i] << ")");
   }
-  MESSAGE(std::string(what) << ": max rel.err " << c.worst << " over " << (c.lanes - c.flagged) << " float lanes, " << c.flagged
-               << " of " << c.lanes << " lanes flagged stiff");
+  MESSAGE(std::string(what) << ": max rel.err " << c.worst << " over " << (c.lanes - c.flagged - c.in_double) << " float lanes, "
+               << c.flagged << " of " << c.lanes << " lanes flagged stiff, " << c.in_double << " computed in double (max rel.err "
+               << c.worst_in_double << " beyond the float rounding)");
   return c;
 }
 
@@ -140,6 +160,24 @@ TEST_CASE("float atan2 (float_atan.h) over the whole upper half plane") {
   }
   MESSAGE("float atan2: max relative error " << worst);
   CHECK(worst < 4e-7);
+}
+
+TEST_CASE("double atan2 (double_atan.h) over the whole upper half plane") {
+  double worst = 0;
+  for (int i = 0; i <= 200000; ++i) {
+    const long double angle = M_PIl * i / 200000;
+    for (long double r : {1e-300L, 1e-3L, 1.0L, 1e300L}) {
+      const double x = double(r * std::cos(angle)), y = double(std::fabs(r * std::sin(angle)));
+      const long double ref = std::atan2((long double)y, (long double)x);  // of the rounded inputs
+      const double got = batch_detail::atan2_upper(y, x);
+      if (ref > 0) worst = std::max(worst, double(std::fabs(got - ref) / ref));
+      else CHECK(got == 0);
+    }
+  }
+  CHECK(batch_detail::atan2_upper(1.0, 0.0) == doctest::Approx(M_PI / 2).epsilon(1e-16));
+  CHECK(batch_detail::atan2_upper(0.0, -1.0) == doctest::Approx(M_PI).epsilon(1e-16));
+  MESSAGE("double atan2: max relative error " << worst);
+  CHECK(worst < 1e-15);
 }
 
 TEST_CASE("float log and log1p (float_log.h) over the whole positive float range") {
@@ -272,7 +310,7 @@ TEST_CASE("linear batch: stiff cases") {
 TEST_CASE("area batch: random convex polygons (3..8 vertices), one- and two-sided") {
   Rng rng(77);
   double worst = 0;
-  long flagged = 0, lanes = 0;
+  long flagged = 0, lanes = 0, in_double = 0;
   for (int l = 0; l < 24; ++l) {
     const int n = 3 + l % 6;
     const Vec3d normal = normalize(Vec3d{rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.5), -1});
@@ -287,13 +325,17 @@ TEST_CASE("area batch: random convex polygons (3..8 vertices), one- and two-side
     const Comparison c = compare(what.c_str(), area_source(poly, l % 4 == 0), pts);
     worst = std::max(worst, c.worst);
     flagged += c.flagged;
+    in_double += c.in_double;
     lanes += c.lanes;
   }
-  MESSAGE("area random: max rel.err " << worst << ", " << flagged << " of " << lanes << " lanes flagged stiff");
+  MESSAGE("area random: max rel.err " << worst << ", " << flagged << " of " << lanes << " lanes flagged stiff, " << in_double
+                                     << " computed in double");
   CHECK(worst <= kFloatBar);
   // Normals here are far more random than a mesh's: a quarter of the lanes see the light grazing or
-  // cut by the horizon, where float cancels (area_diffuse_batch.h) and the double kernel takes over.
-  CHECK(double(flagged) < 0.3 * double(lanes));
+  // cut by the horizon, where float cancels and the kernel's double lanes take over (area_diffuse_batch.h).
+  CHECK(flagged == 0);
+  CHECK(in_double > 0);
+  CHECK(double(in_double) < 0.3 * double(lanes));
 }
 
 TEST_CASE("area batch: stiff cases") {
@@ -343,6 +385,135 @@ TEST_CASE("area batch: stiff cases") {
     pts.add({0.3, 0, 3}, {0.2, 0, -1});
     compare("area stiff behind", area_source(square(0.5, 1)), pts);
     compare("area stiff two-sided back", area_source(square(0.5, 1), true), pts);
+  }
+}
+
+// Sets that send many lanes through the area kernel's double lanes (compare() checks each against
+// the scalar double kernel to the float rounding of the result).
+TEST_CASE("area batch: lanes computed in double") {
+  Rng rng(4242);
+  Points pts;
+  long expected_min = 0;
+  SUBCASE("grazing: the light just above each lane's horizon, or cut by it") {
+    // A floor under a unit square at height 1; each normal tilted so that the square's centre is
+    // seen 1e-4 .. 0.2 rad above or below the tangent plane.
+    for (int i = 0; i < 600; ++i) {
+      const Vec3d p{rng.uniform(-3, 3), rng.uniform(-3, 3), 0};
+      const Vec3d to_light = normalize(Vec3d{0, 0, 1} - p);
+      const Vec3d side = normalize(cross(to_light, rng.unit()));
+      const Vec3d in_plane = normalize(cross(side, to_light));  // perpendicular to to_light
+      const double elevation = (i % 2 ? 1 : -1) * rng.log_uniform(1e-4, 0.2);
+      pts.add(p, in_plane * std::cos(elevation) + to_light * std::sin(elevation));
+    }
+    expected_min = 100;
+    const Comparison c = compare("area double grazing", area_source(square(0.5, 1)), pts);
+    CHECK(c.in_double >= expected_min);
+  }
+  SUBCASE("beyond 1e8: float would overflow, the double lanes use the small-light form") {
+    for (int i = 0; i < 40; ++i) pts.add({rng.uniform(-1e3, 1e3), rng.uniform(-1e3, 1e3), 0}, rng.unit() + Vec3d{0, 0, 1.5});
+    const Comparison c = compare("area double far", area_source(square(0.5, 1e9)), pts);
+    CHECK(c.in_double == 40);
+  }
+  SUBCASE("mixed forms in one block: grazing lanes near (plain) and far (small-light form)") {
+    for (int i = 0; i < 300; ++i) {
+      const double r = i % 2 ? rng.uniform(0, 2) : rng.uniform(40, 60);
+      const double phi = rng.uniform(0, 2 * M_PI);
+      const Vec3d p{r * std::cos(phi), r * std::sin(phi), 0};
+      const Vec3d to_light = normalize(Vec3d{0, 0, 1} - p);
+      const Vec3d in_plane = normalize(cross(cross(to_light, Vec3d{0, 0, 1}), to_light) + Vec3d{0, 0, 1e-9});
+      pts.add(p, in_plane + to_light * rng.uniform(-0.02, 0.02));
+    }
+    const Comparison c = compare("area double mixed", area_source(square(0.5, 1)), pts);
+    CHECK(c.in_double >= 100);
+  }
+  SUBCASE("P next to a vertex, light cut by the horizon (the direct cross product)") {
+    for (int i = 0; i < 64; ++i) {
+      const Vec3d p = Vec3d{0.5, 0.5, 1} + rng.unit() * rng.log_uniform(1e-7, 1e-2) + Vec3d{0, 0, -1e-3};
+      pts.add(p, Vec3d{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(-0.05, 0.05)});
+    }
+    const Comparison c = compare("area double near vertex", area_source(square(0.5, 1)), pts);
+    CHECK(c.in_double > 0);
+  }
+}
+
+LightSource disk_source(const Vec3d& center, const Vec3d& normal, double radius, bool two_sided = false) {
+  LightSource l;
+  l.type = LightType::kDisk;
+  l.name = "disk";
+  l.center = center;
+  l.normal = normal;
+  l.radius = radius;
+  l.two_sided = two_sided;
+  return l;
+}
+
+// Disk lanes are computed in double (disk_diffuse_batch.h): compare() checks each against the
+// scalar double kernel (closed form and arc, itself checked against 2D quadrature in
+// tests/kernels/area/disk_test.cpp) to the float rounding of the result; lanes whose horizon cuts
+// the disk are flagged and carry 0.
+TEST_CASE("disk batch: random disks and points, one- and two-sided") {
+  Rng rng(909);
+  long flagged = 0, lanes = 0, in_double = 0;
+  for (int l = 0; l < 16; ++l) {
+    const Vec3d center{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(1, 3)};
+    const Vec3d normal = normalize(Vec3d{rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), -1});
+    Points pts;
+    for (int i = 0; i < 512; ++i) {
+      const Vec3d p{rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-0.5, 0.5)};
+      pts.add(p, normalize(normalize(center - p) + rng.unit() * 0.9));
+    }
+    const std::string what = "disk random " + std::to_string(l);
+    const Comparison c = compare(what.c_str(), disk_source(center, normal, rng.log_uniform(0.05, 2), l % 4 == 0), pts);
+    flagged += c.flagged;
+    in_double += c.in_double;
+    lanes += c.lanes;
+  }
+  MESSAGE("disk random: " << in_double << " of " << lanes << " lanes computed in double, " << flagged << " flagged (horizon cuts the disk)");
+  CHECK(in_double + flagged == lanes);
+  CHECK(flagged > 0);
+  CHECK(double(flagged) < 0.3 * double(lanes));
+}
+
+TEST_CASE("disk batch: stiff cases") {
+  Points pts;
+  const LightSource unit_disk = disk_source({0, 0, 1}, {0, 0, -1}, 1);
+  SUBCASE("on the axis, near and far") {
+    for (double h : {1e-6, 1e-3, 1.0, 1e3, 1e6}) pts.add({0, 0, 1 - h}, {0, 0, 1});
+    CHECK(compare("disk stiff axis", unit_disk, pts).in_double == 5);
+  }
+  SUBCASE("near the rim, inside and outside, 1e-4 below the plane (X + s rearranged when X < 0)") {
+    for (double r : {0.999, 0.9999, 1.0, 1.0001, 1.001, 1.1, 3.0}) pts.add({r, 0, 1 - 1e-4}, {0, 0, 1});
+    CHECK(compare("disk stiff rim", unit_disk, pts).in_double == 7);
+  }
+  SUBCASE("outside the rim, 1e-7 below the plane: X + s cancels to 1e-14 of X unless rearranged") {
+    for (double r : {1.5, 2.0, 3.0, 10.0}) pts.add({r, 0, 1 - 1e-7}, {0, 0, 1});
+    CHECK(compare("disk stiff outside rim", unit_disk, pts).in_double == 4);
+  }
+  SUBCASE("in the disk's plane, behind a one-sided disk, the back of a two-sided one") {
+    pts.add({3, 0, 1}, {-1, 0, 0});
+    pts.add({0.2, 0.1, 2}, {0, 0, -1});
+    pts.add({0.2, 0.1, 1.5}, {0.1, 0, -1});
+    compare("disk stiff behind", unit_disk, pts);
+    compare("disk stiff two-sided back", disk_source({0, 0, 1}, {0, 0, -1}, 1, true), pts);
+  }
+  SUBCASE("tiny (1e-6), huge (1e6), far (1e7), offset 1e4") {
+    pts.add({0.3, 0.2, 0}, {0.1, 0.2, 1});
+    pts.add({1e-7, 0, 0.5}, {0, 0.3, 1});
+    compare("disk stiff tiny", disk_source({0, 0, 1}, {0, 0, -1}, 1e-6), pts);
+    compare("disk stiff huge", disk_source({1e5, 0, 1}, {0, 0, -1}, 1e6), pts);
+    compare("disk stiff far", disk_source({0, 0, 1e7}, {0.1, 0, -1}, 1), pts);
+    Points offset;
+    const Vec3d o{1e4, -1e4, 1e4};
+    for (int i = 0; i < 8; ++i) offset.add(Vec3d{0.3 * i - 1, 0.1, 0} + o, {0.1, 0, 1});
+    compare("disk stiff offset", disk_source(Vec3d{0, 0, 1} + o, {0, 0, -1}, 0.5), offset);
+  }
+  SUBCASE("grazing: the disk just above the horizon, and cut by it (flagged)") {
+    pts.add({0, 0, 0}, {1, 0, 1e-9});   // the disk sits right on top: horizon through the axis
+    pts.add({5, 0, 0}, {-0.2, 0, 1});    // far off to the side, the disk barely above the horizon
+    pts.add({5, 0, 0}, {-0.19, 0, 1});   // just above it on the other side
+    pts.add({0, 0, 0}, {1, 0, 0.5});     // cut
+    const Comparison c = compare("disk stiff grazing", unit_disk, pts);
+    CHECK(c.flagged >= 1);
   }
 }
 

@@ -75,7 +75,7 @@ const char* diffuse_kernel(const LightSource& l, const ShadeOptions& o) {
       return integer && !o.linear.force_quadrature ? "linear closed form (eq. 4)" : "linear adaptive quadrature (eq. 4)";
     }
     case LightType::kArea: return "area contour integral (eq. 9)";
-    case LightType::kDisk: return "disk as adaptive polygon (eq. 9)";
+    case LightType::kDisk: return "disk contour integral, closed form (eq. 9)";
   }
   return "?";
 }

@@ -141,7 +141,10 @@ R disk_specular_exact(const AreaView<R>& view, R radius, const Vec3<R>& n, const
     }
   }
   {
-    std::sort(breaks.begin(), breaks.begin() + nb);
+    // At most 4 crossings: insertion sort (std::sort's 16-element threshold made GCC 12 warn of
+    // out-of-bounds access on this 4-element array, a false positive).
+    for (int i = 1; i < nb; ++i)
+      for (int j = i; j > 0 && breaks[j] < breaks[j - 1]; --j) std::swap(breaks[j], breaks[j - 1]);
     // Sub-arcs between consecutive crossings (cyclically); the whole rim if there are none.
     const int count = std::max(nb, 1);
     for (int i = 0; i < count; ++i) {

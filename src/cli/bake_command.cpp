@@ -12,6 +12,7 @@
 
 #include "bake/bake_file.h"
 #include "cli/commands.h"
+#include "cli/openmp_wait_policy.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
@@ -108,7 +109,7 @@ BakeFileOptions file_options(const BakeArgs& args) {
 
 // --explain: the scene plan and where the time went, on stdout.
 void print_explain(const std::string& input, const BakeFileResult& r) {
-  std::printf("%s\n%s", input.c_str(), r.plan.c_str());
+  std::printf("%s\n%s%s\n", input.c_str(), r.plan.c_str(), openmp_threads_line().c_str());
   std::printf("time: load %.3f s, plan %.3f s, light %.3f s, encode %.3f s, write %.3f s\n", r.seconds.load,
               r.seconds.plan, r.seconds.light, r.seconds.encode, r.seconds.write);
 }

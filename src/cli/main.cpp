@@ -3,16 +3,20 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/openmp_wait_policy.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
 #include "core/version.h"
 
 int main(int argc, char** argv) {
+  vlit::cli::prefer_passive_openmp_wait(argv);
   CLI::App app{"vlit: light triangle meshes per vertex with point, spot, directional, linear (tube) and area\n"
                "(panel) lights, then bake the light into glTF vertex colors or render it to PNG."};
   app.set_version_flag("--version", std::string("vlit ") + vlit::kVersion);
   app.require_subcommand(1);
-  app.footer("Run 'vlit COMMAND --help' for the options of a command. Formats: docs/lights-json.md.");
+  app.footer("Run 'vlit COMMAND --help' for the options of a command. Formats: docs/lights-json.md.\n"
+             "Threads: OMP_NUM_THREADS (default: all cores). vlit sets OMP_WAIT_POLICY=passive unless it is\n"
+             "set, so that several bakes at once do not slow each other down (docs/performance.md).");
 
   const vlit::cli::Runner bake = vlit::cli::add_bake_command(app);
   const vlit::cli::Runner render = vlit::cli::add_render_command(app);

@@ -7,6 +7,7 @@
 
 #include "bake/light_vertices.h"
 #include "cli/commands.h"
+#include "cli/openmp_wait_policy.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
@@ -168,7 +169,7 @@ int run_render(const RenderArgs& args) {
   std::string error;
   if (!raster::write_png(args.output, image.width, image.height, rgb8, &error)) throw InputError(args.output, error);
   if (args.explain) {
-    std::printf("%s\n%s", args.input.c_str(), plan_text.c_str());
+    std::printf("%s\n%s%s\n", args.input.c_str(), plan_text.c_str(), openmp_threads_line().c_str());
     std::printf("time: load %.3f s, plan %.3f s, light %.3f s, rasterize %.3f s, encode+write %.3f s\n", load_seconds,
                 plan_seconds, light_seconds, raster_seconds, since(t));
   }

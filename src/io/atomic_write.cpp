@@ -21,7 +21,11 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   const fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw InputError(path, "output directory does not exist: " + dir.string());
-  std::string tmpl = (dir / ("." + target.filename().string() + ".vlit-tmp-XXXXXX")).string();
+  // Appended piece by piece: GCC 12 gives a false -Wrestrict warning for "." + std::string&&.
+  std::string hidden = ".";
+  hidden += target.filename().string();
+  hidden += ".vlit-tmp-XXXXXX";
+  const std::string tmpl = (dir / hidden).string();
   std::vector<char> name(tmpl.begin(), tmpl.end());
   name.push_back('\0');
   const int fd = mkstemp(name.data());

@@ -75,7 +75,7 @@ const char* diffuse_kernel(const LightSource& l, const ShadeOptions& o) {
       return integer && !o.linear.force_quadrature ? "linear closed form (eq. 4)" : "linear adaptive quadrature (eq. 4)";
     }
     case LightType::kArea: return "area contour integral (eq. 9)";
-    case LightType::kDisk: return "disk as adaptive polygon (eq. 9)";
+    case LightType::kDisk: return "disk contour integral, closed form (eq. 9)";
   }
   return "?";
 }
@@ -105,7 +105,7 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
     const LightSource& l = scene.lights[li];
     const Vec3d radiance = l.color * l.intensity;
     if (!(radiance.x > 0 || radiance.y > 0 || radiance.z > 0)) {
-      plan.skipped.push_back("light " + l.name + ": zero intensity or colour");
+      plan.skipped.add("zero intensity or colour", [&] { return "light " + l.name; });
       continue;
     }
     try {
@@ -129,7 +129,7 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
         plan.lights_of_primitive[p].push_back(static_cast<int>(i));
         ++plan.pairs_kept;
       } else {
-        plan.skipped.push_back("light " + kept[i]->name + " x primitive " + std::to_string(p) + ": " + why);
+        plan.skipped.add(why, [&] { return "light " + kept[i]->name + " x primitive " + std::to_string(p); });
       }
     }
   }
@@ -162,7 +162,13 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     if (batch.light) s << "float SIMD batch (" << batch_instruction_set() << ")\n";
     else s << "scalar double (" << batch.reason << ")\n";
   }
-  for (const std::string& line : plan.skipped) s << "plan: skipped " << line << "\n";
+  for (const std::string& line : plan.skipped.details) s << "plan: skipped " << line << "\n";
+  if (plan.skipped.total > plan.skipped.details.size()) {
+    s << "plan: ... and " << plan.skipped.total - plan.skipped.details.size() << " more skipped; all "
+      << plan.skipped.total << " by reason:";
+    for (const auto& [reason, count] : plan.skipped.reasons) s << " " << reason << " (" << count << ");";
+    s << "\n";
+  }
   return s.str();
 }
 

@@ -13,7 +13,9 @@
 // describe() prints the plan for `--explain`.
 #pragma once
 
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/scene.h"
@@ -27,6 +29,26 @@ struct PlanOptions {
   bool has_eye = false;
   bool float_batch = true;  // let diffuse-only lights use the float SIMD batch kernels
   bool shadows = false;  // --shadows on: lights with "shadows": true are hidden by the scene's triangles
+};
+
+// What the plan left out and why. Every skip is counted by its reason; only the first
+// kMaxDetails are kept word for word (light, primitive, reason) for --explain: a scene with
+// thousands of lights and primitives would otherwise keep and print millions of lines.
+struct SkipLog {
+  static constexpr std::size_t kMaxDetails = 40;
+  std::vector<std::string> details;                          // "<subject>: <reason>", the first kMaxDetails
+  std::vector<std::pair<std::string, std::size_t>> reasons;  // reason, count; in order of first use
+  std::size_t total = 0;
+
+  // `subject()` names what was skipped ("light L x primitive 3"); called only while details are kept.
+  template <class Subject>
+  void add(const std::string& reason, Subject&& subject) {
+    ++total;
+    auto it = std::find_if(reasons.begin(), reasons.end(), [&](const auto& r) { return r.first == reason; });
+    if (it == reasons.end()) reasons.emplace_back(reason, 1);
+    else ++it->second;
+    if (details.size() < kMaxDetails) details.push_back(subject() + ": " + reason);
+  }
 };
 
 struct ScenePlan {
@@ -43,7 +65,7 @@ struct ScenePlan {
   std::size_t shadowed_pairs = 0;
   std::size_t occluder_triangles = 0;                 // triangles of the scene when planned
   ShadeOptions shade;                                 // with_specular already resolved
-  std::vector<std::string> skipped;                   // one line per skipped light or pair, why
+  SkipLog skipped;                                    // what was left out, why
   std::size_t pairs_total = 0, pairs_kept = 0;
 };
 

@@ -95,13 +95,13 @@ void plan_shadows(const Scene& scene, const std::vector<const LightSource*>& kep
         ++plan.shadowed_pairs;
         plan.needs_occluders = true;
       } else {
-        plan.skipped.push_back("shadows of light " + light.name + " on primitive " + std::to_string(p) +
-                               ": nothing can lie between them");
+        plan.skipped.add("nothing can lie between them",
+                         [&] { return "shadows of light " + light.name + " on primitive " + std::to_string(p); });
       }
     }
   }
   for (const LightSource* light : kept)
-    if (!light->casts_shadows) plan.skipped.push_back("shadows of light " + light->name + ": \"shadows\": false");
+    if (!light->casts_shadows) plan.skipped.add("\"shadows\": false", [&] { return "shadows of light " + light->name; });
 }
 
 }  // namespace vlit

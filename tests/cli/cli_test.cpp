@@ -218,6 +218,15 @@ TEST_CASE("--explain prints the plan and per-stage times") {
   CHECK(r.out.find("area contour integral (eq. 9)") != std::string::npos);
   CHECK(r.out.find("linear closed form (eq. 4)") != std::string::npos);
   CHECK(r.out.find("time: load") != std::string::npos);
+  // vlit restarts itself with a passive OpenMP wait policy unless the user chose one.
+  const std::string unset = "env -u OMP_WAIT_POLICY ";
+  CHECK(r.out.find("(OpenMP wait policy ") != std::string::npos);
+  const auto passive = run_command(unset + kVlit + " bake " + q(kDemo) + " --lights " + q(kDemoLights) + " -o " +
+                                   q((dir / "out.glb").string()) + " --explain -q");
+  CHECK(passive.out.find("(OpenMP wait policy passive)") != std::string::npos);
+  const auto active = run_command("OMP_WAIT_POLICY=active " + kVlit + " bake " + q(kDemo) + " --lights " + q(kDemoLights) +
+                                  " -o " + q((dir / "out.glb").string()) + " --explain -q");
+  CHECK(active.out.find("(OpenMP wait policy active)") != std::string::npos);
   const auto render = run_command(kVlit + " render " + q(kDemo) + " --lights " + q(kDemoLights) + " -o " +
                                   q((dir / "out.png").string()) + " --width 32 --height 24 --explain -q --specular neighborhood:2");
   REQUIRE_MESSAGE(render.exit_code == 0, render.err);

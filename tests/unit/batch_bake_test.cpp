@@ -72,6 +72,12 @@ Scene test_scene() {
   spot.cos_inner = std::cos(0.4);
   spot.cos_outer = std::cos(0.7);
   add(spot, "spot");
+  LightSource disk;  // tilted, so that the sheet's horizon cuts it for some vertices (scalar arc lanes)
+  disk.type = LightType::kDisk;
+  disk.center = {-1, 1, 1.4};
+  disk.normal = normalize(Vec3d{0.4, -0.3, -1});
+  disk.radius = 0.6;
+  add(disk, "disk");
   return scene;
 }
 
@@ -91,6 +97,8 @@ TEST_CASE("batch bake: the plan names the float batch kernels and why the others
   const Scene scene = test_scene();
   const std::string text = describe(plan_lighting(scene, LightingRequest{}), scene);
   CHECK(text.find("light quad: area contour integral (eq. 9), 17161 vertices, float SIMD batch") != std::string::npos);
+  CHECK(text.find("light disk: ") != std::string::npos);
+  CHECK(text.find("float SIMD batch", text.find("light disk: ")) < text.find('\n', text.find("light disk: ")));
   CHECK(text.find("light l-shape: area contour integral (eq. 9), 17161 vertices, scalar double (non-convex polygon)") !=
         std::string::npos);
   CHECK(text.find("light tube1: linear closed form (eq. 4), 17161 vertices, float SIMD batch") != std::string::npos);

@@ -108,3 +108,25 @@ TEST_CASE("lights and pairs that cannot contribute are skipped, with the reason"
     }
   }
 }
+
+TEST_CASE("--explain keeps the first skipped pairs word for word and counts the rest by reason") {
+  Scene scene;
+  for (int p = 0; p < 10; ++p) scene.primitives.push_back(floor_patch(2.0 * p));
+  for (int l = 0; l < 10; ++l) {
+    LightSource up = panel(2, false);  // above the floor, facing up: reaches no patch
+    up.name = "up" + std::to_string(l);
+    scene.lights.push_back(up);
+  }
+  const ScenePlan plan = plan_lighting(scene, LightingRequest{});
+  CHECK(plan.skipped.total == 100);
+  CHECK(plan.skipped.details.size() == SkipLog::kMaxDetails);
+  REQUIRE(plan.skipped.reasons.size() == 1);
+  CHECK(plan.skipped.reasons[0].second == 100);
+  const std::string text = describe(plan, scene);
+  std::size_t lines = 0;
+  for (std::size_t at = text.find("plan: skipped "); at != std::string::npos; at = text.find("plan: skipped ", at + 1)) ++lines;
+  CHECK(lines == SkipLog::kMaxDetails);
+  CHECK(text.find("light up0 x primitive 0: the box is behind the emitting side") != std::string::npos);
+  CHECK(text.find("plan: ... and 60 more skipped; all 100 by reason: the box is behind the emitting side (100);") !=
+        std::string::npos);
+}

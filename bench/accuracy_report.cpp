@@ -1609,8 +1609,8 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
        << fmt_ns(f0.seconds * 1e6) << " µs |\n";
   }
   md << "| `LightingRequest::float_batch` = " << (LightingRequest{}.float_batch ? "true" : "false")
-     << ": diffuse-only lights in the float SIMD batch kernels (docs/performance.md), lanes they flag recomputed in "
-        "double; specular, disks and other falloffs on the scalar double kernels | bake | within 1e-5 of the double "
+     << ": diffuse-only lights in the SIMD batch kernels (docs/performance.md), stiff lanes recomputed in double; "
+        "specular, non-convex polygons and non-integer falloffs on the scalar double kernels | bake | within 1e-5 of the double "
         "kernels per lane (tests/kernels/batch) | end-to-end diffuse only vs reference: max/top "
      << fmt(e2e.batch.max_rel) << " (scalar double at the same settings: " << fmt(e2e.scalar_double.max_rel)
      << ") | end-to-end lighting " << fmt_ns(e2e.batch.seconds * 1e3) << " ms vs " << fmt_ns(e2e.scalar_double.seconds * 1e3)

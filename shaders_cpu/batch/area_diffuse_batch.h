@@ -52,9 +52,8 @@
 #include <cmath>
 
 #include "area_diffuse_contour.h"
+#include "batch/atan2_upper.h"
 #include "batch/batch_points.h"
-#include "batch/double_atan.h"
-#include "batch/float_atan.h"
 
 namespace vlit {
 

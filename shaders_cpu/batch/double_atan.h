@@ -1,7 +1,7 @@
-// atan2(y, x) for y >= 0 in double, vectorisable (no library call, no branch): the double
-// counterpart of float_atan.h, for the batch kernels' double lanes (area_diffuse_batch.h).
+// atan(t) for t in [0, 1] in double, vectorisable: the double lanes' part of atan2_upper.h
+// (area_diffuse_batch.h's double lanes).
 //
-// Range reduction to t = min(y, |x|) / max(y, |x|) in [0, 1], then, for t > tan(pi/8),
+// For t > tan(pi/8),
 // atan(t) = pi/4 + atan((t - 1)/(t + 1)), so the polynomial only sees |u| <= tan(pi/8):
 // atan(u) = u P(u^2) with P the degree-11 Chebyshev interpolant of atan(sqrt z)/sqrt z on
 // z in [0, tan^2(pi/8)] (near-minimax). Coefficients: `./build/release/bench/fit_atan_polynomial 11
@@ -31,17 +31,6 @@ inline double atan_unit(double t) {  // t in [0, 1]
   p = p * z + 9.999999999999999991e-01;
   const double r = u * p;
   return high ? kQuarterPi + r : r;
-}
-
-// atan2(y, x) for y >= 0: the angle in [0, pi] between (x, y) and the positive x axis.
-inline double atan2_upper(double y, double x) {
-  constexpr double kHalfPi = 1.57079632679489661923, kPi = 3.14159265358979323846;
-  const double ax = x < 0. ? -x : x;
-  const double hi = y > ax ? y : ax, lo = y > ax ? ax : y;
-  const double t = hi > 0. ? lo / hi : 0.;
-  double r = atan_unit(t);
-  r = y > ax ? kHalfPi - r : r;
-  return x < 0. ? kPi - r : r;
 }
 
 }  // namespace vlit::batch_detail

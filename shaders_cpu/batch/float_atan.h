@@ -1,9 +1,7 @@
-// atan2(y, x) for y >= 0 in float, vectorisable (no library call, no branch).
+// atan(t) for t in [0, 1] in float, vectorisable: the float lanes' part of atan2_upper.h.
 //
-// Range reduction to t = min(y, |x|) / max(y, |x|) in [0, 1], then atan(t) = t P(t^2) with P the
-// degree-8 Chebyshev interpolant of atan(sqrt z)/sqrt z on z in [0, 1] (interpolation at the
-// Chebyshev nodes, near-minimax), then atan2 = pi/2 - atan(t) when y > |x| and pi - that when
-// x < 0. Coefficients: `./build/release/bench/fit_atan_polynomial 8` (bench/fit_atan_polynomial.cpp).
+// atan(t) = t P(t^2) with P the degree-8 Chebyshev interpolant of atan(sqrt z)/sqrt z on z in
+// [0, 1] (interpolation at the Chebyshev nodes, near-minimax). Coefficients: `./build/release/bench/fit_atan_polynomial 8` (bench/fit_atan_polynomial.cpp).
 // Measured by that program: max relative error 1.4e-7 over [0, 1] in float (truncation is below
 // float rounding); tests/kernels/batch/batch_kernels_test.cpp "float atan2" checks 4e-7 over
 // the whole range of angles.
@@ -23,17 +21,6 @@ inline float atan_unit(float t) {  // t in [0, 1]
   p = p * z + -3.333303671e-01f;
   p = p * z + 9.999999818e-01f;
   return t * p;
-}
-
-// atan2(y, x) for y >= 0: the angle in [0, pi] between (x, y) and the positive x axis.
-inline float atan2_upper(float y, float x) {
-  constexpr float kHalfPi = 1.57079632679489662f, kPi = 3.14159265358979324f;
-  const float ax = x < 0.f ? -x : x;
-  const float hi = y > ax ? y : ax, lo = y > ax ? ax : y;
-  const float t = hi > 0.f ? lo / hi : 0.f;
-  float r = atan_unit(t);
-  r = y > ax ? kHalfPi - r : r;
-  return x < 0.f ? kPi - r : r;
 }
 
 }  // namespace vlit::batch_detail

@@ -47,8 +47,8 @@
 
 #include <cmath>
 
+#include "batch/atan2_upper.h"
 #include "batch/batch_points.h"
-#include "batch/float_atan.h"
 #include "batch/float_log.h"
 
 namespace vlit {

@@ -18,8 +18,7 @@
 
 #include "kernels/area/area_test_util.h"
 #include "support/test_rng.h"
-#include "batch/double_atan.h"
-#include "batch/float_atan.h"
+#include "batch/atan2_upper.h"
 #include "batch/float_log.h"
 #include "shading/batch_kernels.h"
 

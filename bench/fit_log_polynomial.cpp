@@ -1,16 +1,19 @@
-// Coefficients of the float log polynomial of shaders_cpu/batch/float_log.h, and its error.
+// Coefficients of the log polynomials of shaders_cpu/batch/float_log.h (float) and
+// shaders_cpu/batch/double_log.h (double), and their errors.
 //
-//   ./build/release/bench/fit_log_polynomial 3
+//   ./build/release/bench/fit_log_polynomial 3            (float)
+//   ./build/release/bench/fit_log_polynomial 9 --double   (double)
 //
 // ln(m) for m in [sqrt(1/2), sqrt(2)) is written ln(m) = s R(s^2) with s = (m - 1)/(m + 1)
 // (ln m = 2 atanh s), s^2 <= z_max = (3 - 2 sqrt 2)^2. R (degree DEG in z = s^2) interpolates
 // f(z) = 2 atanh(sqrt z)/sqrt z at the DEG + 1 Chebyshev nodes of [0, z_max] (near-minimax;
 // bench/chebyshev_fit.h). Prints the coefficients (z^0 first) and the maximum relative error of the
-// float evaluation of s R(s^2) (with s computed in float, as in float_log.h) against long-double
-// log on 2e6 + 1 points m of [sqrt(1/2), sqrt(2)].
+// float (double) evaluation of s R(s^2) (with s computed in that precision, as in float_log.h and
+// double_log.h) against long-double log on 2e6 + 1 points m of [sqrt(1/2), sqrt(2)].
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <vector>
 
 #include "chebyshev_fit.h"
@@ -19,25 +22,40 @@ using vlit::fit::LD;
 
 int main(int argc, char** argv) {
   const int deg = argc > 1 ? std::atoi(argv[1]) : 3;
-  if (deg < 1 || deg > 12) {
-    std::fprintf(stderr, "usage: fit_log_polynomial [DEGREE 1..12]\n");
+  const bool dbl = argc > 2 && std::strcmp(argv[2], "--double") == 0;
+  if (deg < 1 || deg > 12 || (argc > 2 && !dbl) || argc > 3) {
+    std::fprintf(stderr, "usage: fit_log_polynomial [DEGREE 1..12] [--double]\n");
     return 2;
   }
   const int n = deg + 1;
   const LD z_max = (3 - 2 * std::sqrt(LD(2))) * (3 - 2 * std::sqrt(LD(2)));
   auto f = [](LD z) { return z == 0 ? LD(2) : 2 * std::atanh(std::sqrt(z)) / std::sqrt(z); };
   const std::vector<LD> mono = vlit::fit::chebyshev_interpolant(f, 0, z_max, deg);
-  for (int i = 0; i < n; ++i) std::printf("z^%d: %.9Le\n", i, mono[i]);
+  for (int i = 0; i < n; ++i) std::printf(dbl ? "z^%d: %.21Le\n" : "z^%d: %.9Le\n", i, mono[i]);
+  auto eval = [&](auto m) {  // s R(s^2) in the precision of m
+    using R = decltype(m);
+    const R s = (m - R(1)) / (m + R(1)), z = s * s;
+    R r = R(mono[n - 1]);
+    for (int k = n - 2; k >= 0; --k) r = r * z + R(mono[k]);
+    return s * r;
+  };
   double worst = 0;
-  const float lo = std::sqrt(0.5f), hi = std::sqrt(2.f);
   for (int i = 0; i <= 2000000; ++i) {
-    const float m = lo + (hi - lo) * float(i) / 2000000.f;
-    const float s = (m - 1.f) / (m + 1.f), z = s * s;
-    float r = float(mono[n - 1]);
-    for (int k = n - 2; k >= 0; --k) r = r * z + float(mono[k]);
-    const LD ref = std::log(LD(m));
-    if (ref != 0) worst = std::max(worst, double(std::fabs((s * r - ref) / ref)));
+    LD m_ref;
+    LD got;
+    if (dbl) {
+      const double lo = std::sqrt(0.5), hi = std::sqrt(2.0), m = lo + (hi - lo) * double(i) / 2000000.0;
+      got = eval(m);
+      m_ref = m;
+    } else {
+      const float lo = std::sqrt(0.5f), hi = std::sqrt(2.f), m = lo + (hi - lo) * float(i) / 2000000.f;
+      got = eval(m);
+      m_ref = m;
+    }
+    const LD ref = std::log(m_ref);
+    if (ref != 0) worst = std::max(worst, double(std::fabs((got - ref) / ref)));
   }
-  std::printf("degree %d: max relative error of the float evaluation on [sqrt(1/2), sqrt(2)]: %.3e\n", deg, worst);
+  std::printf("degree %d: max relative error of the %s evaluation on [sqrt(1/2), sqrt(2)]: %.3e\n", deg,
+              dbl ? "double" : "float", worst);
   return 0;
 }

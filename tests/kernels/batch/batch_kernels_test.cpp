@@ -19,6 +19,7 @@
 #include "kernels/area/area_test_util.h"
 #include "support/test_rng.h"
 #include "batch/atan2_upper.h"
+#include "batch/double_log.h"
 #include "batch/float_log.h"
 #include "shading/batch_kernels.h"
 
@@ -211,6 +212,40 @@ TEST_CASE("float log and log1p (float_log.h) over the whole positive float range
   CHECK(worst_log1p < 4e-7);
   // The ratio form for x near -1, where x has lost the digits of 1 + x: ln(1 + x) from the ratio.
   CHECK(std::fabs(batch_detail::log1p_or_log_ratio(-1.f + 1e-7f, 1e-7f * 1.25f) - std::log(1.25e-7)) < 4e-7 * 16);
+}
+
+TEST_CASE("double log and log1p (double_log.h)") {
+  double worst_log = 0, worst_log1p = 0;
+  long count = 0;
+  // log over the whole positive range, subnormals included: 2^e m on a grid of exponents and mantissas.
+  for (int e = -1074; e <= 1023; e += 3)
+    for (int i = 0; i < 64; ++i) {
+      const double x = std::ldexp(1.0 + i / 64.0, e);
+      if (!(x > 0) || !std::isfinite(x)) continue;
+      const long double ref = std::log((long double)x);
+      const double got = batch_detail::log_positive(x);
+      if (ref != 0) worst_log = std::max(worst_log, double(std::fabs((got - ref) / ref)));
+      ++count;
+    }
+  // Near 1, where ln x is small.
+  for (int i = -20000; i <= 20000; ++i) {
+    const double x = 1.0 + i * 1e-9;
+    const long double ref = std::log((long double)x);
+    if (ref != 0) worst_log = std::max(worst_log, double(std::fabs((batch_detail::log_positive(x) - ref) / ref)));
+  }
+  // log1p on (-1, 2]: tiny, small and large arguments, both signs.
+  for (int i = 1; i <= 200000; ++i) {
+    const double t = i / 200000.0;
+    for (double x : {-t * (1 - 1e-12), 2 * t, t * 1e-10, -t * 1e-10, t * t * t * 1e-300}) {
+      const long double ref = std::log1p((long double)x);
+      const double got = batch_detail::log1p_double(x);
+      if (ref != 0) worst_log1p = std::max(worst_log1p, double(std::fabs((got - ref) / ref)));
+    }
+  }
+  MESSAGE("double log: max relative error " << worst_log << " (" << count << " arguments over the whole range), log1p "
+                                            << worst_log1p);
+  CHECK(worst_log < 1e-15);
+  CHECK(worst_log1p < 2e-15);
 }
 
 TEST_CASE("linear batch: random segments, falloff 0..3") {

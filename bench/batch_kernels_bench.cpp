@@ -351,7 +351,7 @@ int main(int argc, char** argv) {
       {"linear diffuse n=3", linear(3), {327, 16, 4}},
       {"quad diffuse", polygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2.1}, {0.5, -0.5, 2.1}}), {1020, 19, 10}},
       {"triangle diffuse", polygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.0, 2.1}}), {830, 15, 8}},
-      // the quad's area and tilt; lanes in double (counted twice), arcs flagged to the scalar kernel
+      // the quad's area and tilt; lanes in double (counted twice); counts of the full-circle lanes only
       {"disk diffuse", disk({0, 0, 2.05}, {0.1, 0, -1}, 0.5642), {190, 6, 8}},
   };
   std::printf("| kernel | double 1T | double 2T | float 1T | float 2T | batch 1T | batch 2T | batch/double 1T | batch/double 2T | batch max rel.err | stiff lanes: scalar / in-kernel double | limit 1T | 1T of limit | 2T of 2x limit |\n");

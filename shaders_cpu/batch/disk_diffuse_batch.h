@@ -1,5 +1,5 @@
-// Disk light, diffuse, batch over structure-of-arrays points: the full-circle closed form of
-// disk_diffuse_contour.h, in double lanes.
+// Disk light, diffuse, batch over structure-of-arrays points: disk_diffuse_contour.h's closed
+// forms (full circle; arc + chord where P's horizon cuts the disk) in double lanes.
 //
 // What it computes (unit intensity, kd = 1; conventions.h): Id = ∫_A max(0, cos theta) cos theta_l
 // / r^2 dA over the disk (Picott 1992 eq. 9 over the circle; docs/area-lights.md "Disk lights"),
@@ -22,10 +22,10 @@
 // angle-difference formulas, psi1/2 by the half-angle formulas in their cancellation-free forms;
 // atan2 from atan2_upper.h, ln and ln(1 + x) from double_log.h, and the series summed to a fixed
 // 40 terms (q < 1/4: the remainder is below 1e-24 of the sum). No lane is flagged.
-// Precision: the closed form is a handful of operations with one square root and one division,
-// so the lanes compute in double, with the scalar kernel's expressions and cancellation-free
-// rearrangements, and round once to float: the result is the scalar double kernel's to the float
-// rounding (tests/kernels/batch/batch_kernels_test.cpp "disk batch"). Per-light constants
+// Precision: the lanes compute in double, with the scalar kernel's expressions and
+// cancellation-free rearrangements, and round once to float: the result is the scalar double
+// kernel's to the float rounding (tests/kernels/batch/batch_kernels_test.cpp "disk batch"; the
+// first pass marks the cut lanes in BatchOutput::stiff, which the second pass clears). Per-light constants
 // (batch_kernel_for): centre, unit normal and the in-plane frame u, v of the prepared disk.
 #pragma once
 

@@ -1,11 +1,10 @@
-// The float batch kernels (shaders_cpu/batch/) behind one entry point, and the choice of which
+// The SIMD batch kernels (shaders_cpu/batch/) behind one entry point, and the choice of which
 // prepared lights can use them.
 //
 // A light gets a batch kernel when only its diffuse is needed and its model has one: point, spot
 // and directional with integer falloff 0..3, linear with integer falloff 0..3 (closed forms),
-// convex area polygons, disks (lanes whose horizon cuts the disk are flagged). Everything else
-// (specular, real falloff, non-convex polygons) stays on the scalar double kernels;
-// batch_kernel_for says why.
+// convex area polygons, disks. Everything else (specular, real falloff, non-convex polygons)
+// stays on the scalar double kernels; batch_kernel_for says why.
 //
 // evaluate_diffuse_batch is compiled for AVX-512, AVX2 and baseline x86-64 and picks the variant
 // for the running CPU once, at load time (GCC function multiversioning): the release build stays

@@ -77,24 +77,24 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
     const std::size_t n = prim.positions.size();
     result.diffuse.assign(n, Vec3f{});
     if (options.with_specular) result.specular.assign(n, Vec3f{});
+    // Shadowed pairs take the shadowed path; of the others, lights with a float batch kernel
+    // first, all in one parallel region; then the rest. Decided once per primitive, from the plan.
+    const std::vector<int>& lights_here = plan.lights_of_primitive[pi];
+    auto shadowed = [&](std::size_t k) { return occluders && plan.shadowed_of_primitive[pi][k]; };
+    batch_lights.clear();
+    for (std::size_t k = 0; k < lights_here.size(); ++k)
+      if (!shadowed(k) && plan.batch_of_light[lights_here[k]].light) batch_lights.push_back(lights_here[k]);
     for (std::size_t begin = 0; begin < n; begin += kChunk) {
       if (request.cancel && request.cancel->load()) return out;
       const std::size_t end = std::min(n, begin + kChunk);
       const long count = static_cast<long>(end - begin);
       std::fill(diffuse.begin(), diffuse.end(), Vec3d{});
       std::fill(specular.begin(), specular.end(), Vec3d{});
-      if (!plan.lights_of_primitive[pi].empty()) {
+      if (!lights_here.empty()) {
 #pragma omp parallel for schedule(static)
         for (long v = 0; v < count; ++v)
           points[v] = make_shading_point(prim.positions[begin + v], prim.normals[begin + v], eye, shininess);
       }
-      // Shadowed pairs take the shadowed path; of the others, lights with a float batch kernel
-      // first, all in one parallel region; then the rest.
-      const std::vector<int>& lights_here = plan.lights_of_primitive[pi];
-      auto shadowed = [&](std::size_t k) { return occluders && plan.shadowed_of_primitive[pi][k]; };
-      batch_lights.clear();
-      for (std::size_t k = 0; k < lights_here.size(); ++k)
-        if (!shadowed(k) && plan.batch_of_light[lights_here[k]].light) batch_lights.push_back(lights_here[k]);
       accumulate_batch_lights(plan, batch_lights, batch, points.data(), count, diffuse.data());
       for (std::size_t k = 0; k < lights_here.size(); ++k) {
         const PreparedLight<double>& light = plan.lights[lights_here[k]];

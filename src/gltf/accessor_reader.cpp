@@ -163,4 +163,12 @@ std::vector<std::uint32_t> read_indices(const tinygltf::Model& model, int index,
   return out;
 }
 
+std::vector<std::uint32_t> draw_order_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                                         std::size_t vertex_count, const std::string& file) {
+  if (prim.indices >= 0) return read_indices(model, prim.indices, vertex_count, file);
+  std::vector<std::uint32_t> order(vertex_count);
+  for (std::size_t i = 0; i < vertex_count; ++i) order[i] = static_cast<std::uint32_t>(i);
+  return order;
+}
+
 }  // namespace vlit

@@ -20,6 +20,11 @@ std::vector<double> read_accessor_as_doubles(const tinygltf::Model& model, int i
 std::vector<std::uint32_t> read_indices(const tinygltf::Model& model, int index, std::size_t vertex_count,
                                         const std::string& file);
 
+// The order in which a primitive draws its vertices: its indices (read_indices), or 0, 1, ...,
+// vertex_count - 1 when it has none.
+std::vector<std::uint32_t> draw_order_of(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                                         std::size_t vertex_count, const std::string& file);
+
 // Number of components of a glTF accessor type (TINYGLTF_TYPE_*), or 0 if unknown.
 int accessor_components(int type);
 

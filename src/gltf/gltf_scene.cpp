@@ -136,13 +136,7 @@ void read_emissive_lines(const GltfFile& file, const tinygltf::Primitive& prim, 
   state.vertices_so_far += count;
   const std::vector<double> pos = read_accessor_as_doubles(model, pos_it->second, file.path);
   const std::size_t vertex_count = pos.size() / 3;
-  std::vector<std::uint32_t> draw_order;
-  if (prim.indices >= 0) {
-    draw_order = read_indices(model, prim.indices, vertex_count, file.path);
-  } else {
-    draw_order.resize(vertex_count);
-    for (std::size_t i = 0; i < vertex_count; ++i) draw_order[i] = static_cast<std::uint32_t>(i);
-  }
+  const std::vector<std::uint32_t> draw_order = draw_order_of(model, prim, vertex_count, file.path);
   std::vector<Vec3d> positions(vertex_count);
   for (std::size_t i = 0; i < vertex_count; ++i) positions[i] = world.apply_point(vec3_at(pos, i));
   auto lights = emissive_line_lights(positions, line_segments(mode, draw_order), material, file.path + ": " + where);
@@ -195,13 +189,7 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
   const std::vector<double> pos = read_accessor_as_doubles(model, pos_it->second, file.path);
   const std::size_t vertex_count = pos.size() / 3;
 
-  std::vector<std::uint32_t> draw_order;
-  if (prim.indices >= 0) {
-    draw_order = read_indices(model, prim.indices, vertex_count, file.path);
-  } else {
-    draw_order.resize(vertex_count);
-    for (std::size_t i = 0; i < vertex_count; ++i) draw_order[i] = static_cast<std::uint32_t>(i);
-  }
+  const std::vector<std::uint32_t> draw_order = draw_order_of(model, prim, vertex_count, file.path);
 
   ScenePrimitive out;
   out.node = node_index;

@@ -42,6 +42,7 @@
 
 #include "bake/bake_file.h"
 #include "shading/batch_kernels.h"
+#include "support/light_sources.h"
 
 namespace {
 
@@ -231,33 +232,8 @@ void run_kernel(const KernelCase& kc, const PointSet& pts, const OpRates& ops, d
   std::fflush(stdout);
 }
 
-LightSource linear(double falloff) {
-  LightSource l;
-  l.type = LightType::kLinear;
-  l.name = "tube";
-  l.from = {-1, -0.3, 1.5};
-  l.to = {1, 0.3, 1.6};
-  l.falloff = falloff;
-  return l;
-}
-
-LightSource polygon(std::vector<Vec3d> poly) {
-  LightSource l;
-  l.type = LightType::kArea;
-  l.name = "panel";
-  l.polygon = std::move(poly);
-  return l;
-}
-
-LightSource disk(const Vec3d& center, const Vec3d& normal, double radius) {
-  LightSource l;
-  l.type = LightType::kDisk;
-  l.name = "disk";
-  l.center = center;
-  l.normal = normal;
-  l.radius = radius;
-  return l;
-}
+// The benchmark's tube (falloff n) above the floor.
+LightSource linear(double falloff) { return test::linear_source({-1, -0.3, 1.5}, {1, 0.3, 1.6}, falloff); }
 
 // ---- Part 2: end-to-end bake -----------------------------------------------------------------
 
@@ -355,10 +331,10 @@ int main(int argc, char** argv) {
       {"linear diffuse n=1", linear(1), {326, 12, 4}},
       {"linear diffuse n=2", linear(2), {227, 5, 4}},
       {"linear diffuse n=3", linear(3), {327, 16, 4}},
-      {"quad diffuse", polygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2.1}, {0.5, -0.5, 2.1}}), {1020, 19, 10}},
-      {"triangle diffuse", polygon({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.0, 2.1}}), {830, 15, 8}},
+      {"quad diffuse", test::area_source({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2.1}, {0.5, -0.5, 2.1}}), {1020, 19, 10}},
+      {"triangle diffuse", test::area_source({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.0, 2.1}}), {830, 15, 8}},
       // the quad's area and tilt; lanes in double (counted twice); counts of the full-circle lanes only
-      {"disk diffuse", disk({0, 0, 2.05}, {0.1, 0, -1}, 0.5642), {190, 6, 8}},
+      {"disk diffuse", test::disk_source({0, 0, 2.05}, {0.1, 0, -1}, 0.5642), {190, 6, 8}},
   };
   std::printf("| kernel | double 1T | double 2T | float 1T | float 2T | batch 1T | batch 2T | batch/double 1T | batch/double 2T | batch max rel.err | stiff lanes: scalar / in-kernel double | limit 1T | 1T of limit | 2T of 2x limit |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");

@@ -7,6 +7,7 @@
 #include "shadow/occluder_bvh.h"
 #include "shadow/shadowed_light.h"
 #include "shadow_reference.h"
+#include "support/light_sources.h"
 
 namespace vlit::test {
 
@@ -35,24 +36,6 @@ inline void add_box(std::vector<Tri>& tris, const Vec3d& lo, const Vec3d& hi) {
   add_quad(tris, lo + ey, ez, ex);            // back
   add_quad(tris, lo, ez, ey);                 // left
   add_quad(tris, lo + ex, ey, ez);            // right
-}
-
-inline LightSource area_source(const std::vector<Vec3d>& polygon) {
-  LightSource l;
-  l.type = LightType::kArea;
-  l.name = "area";
-  l.polygon = polygon;
-  return l;
-}
-
-inline LightSource linear_source(const Vec3d& a, const Vec3d& b, double falloff) {
-  LightSource l;
-  l.type = LightType::kLinear;
-  l.name = "tube";
-  l.from = a;
-  l.to = b;
-  l.falloff = falloff;
-  return l;
 }
 
 inline ShadeOptions options_with(SpecularMethod method) {

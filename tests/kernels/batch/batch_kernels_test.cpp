@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "kernels/area/area_test_util.h"
+#include "support/light_sources.h"
 #include "support/test_rng.h"
 #include "batch/atan2_upper.h"
 #include "batch/double_log.h"
@@ -121,24 +122,9 @@ Comparison compare(const char* what, const LightSource& source, const Points& pt
   return c;
 }
 
-LightSource linear_source(const Vec3d& q0, const Vec3d& q1, double falloff) {
-  LightSource l;
-  l.type = LightType::kLinear;
-  l.name = "tube";
-  l.from = q0;
-  l.to = q1;
-  l.falloff = falloff;
-  return l;
-}
-
-LightSource area_source(std::vector<Vec3d> polygon, bool two_sided = false) {
-  LightSource l;
-  l.type = LightType::kArea;
-  l.name = "panel";
-  l.polygon = std::move(polygon);
-  l.two_sided = two_sided;
-  return l;
-}
+using vlit::test::area_source;
+using vlit::test::disk_source;
+using vlit::test::linear_source;
 
 using vlit::test::convex_polygon;
 
@@ -473,16 +459,6 @@ TEST_CASE("area batch: lanes computed in double") {
   }
 }
 
-LightSource disk_source(const Vec3d& center, const Vec3d& normal, double radius, bool two_sided = false) {
-  LightSource l;
-  l.type = LightType::kDisk;
-  l.name = "disk";
-  l.center = center;
-  l.normal = normal;
-  l.radius = radius;
-  l.two_sided = two_sided;
-  return l;
-}
 
 // Disk lanes are computed in double (disk_diffuse_batch.h): compare() checks each against the
 // scalar double kernel (closed form and arc, itself checked against 2D quadrature in

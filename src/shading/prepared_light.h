@@ -20,10 +20,16 @@
 
 namespace vlit {
 
+// How the visible part of a shadowed area light is found (src/shadow/): from the silhouette
+// edges of the occluders (area_silhouette.h; falls back to the cuts where its checks fail), or by
+// cutting the light with every occluder triangle (area_visibility.h; the tests' reference).
+enum class AreaShadowMethod { kSilhouette, kTriangleCuts };
+
 struct ShadeOptions {
   bool with_specular = true;
   SpecularOptions specular;
   LinearDiffuseOptions linear;
+  AreaShadowMethod area_shadows = AreaShadowMethod::kSilhouette;
 };
 
 template <class T>

@@ -6,24 +6,7 @@
 namespace vlit {
 namespace {
 
-// Fraction of the light-to-P height kept free next to the light's plane and next to P.
-constexpr double kLightPlaneMargin = 1e-7;
-constexpr double kApexMargin = 1e-9;
-constexpr double kEdgeOn = 1e-12;
 constexpr double kPieceAreaFloor = 1e-12;
-
-struct Slab {
-  HalfSpace beyond_light;  // height above the light's plane >= margin
-  HalfSpace before_p;      // height <= h (1 - apex margin)
-};
-
-Slab slab_of(const PreparedAreaLight<double>& light, const AreaView<double>& view, const Vec3d& p) {
-  const double margin = kLightPlaneMargin * (view.height + light.radius);
-  Slab s;
-  s.beyond_light = {view.normal, light.center + view.normal * margin};
-  s.before_p = {-view.normal, p - view.normal * (view.height * kApexMargin)};
-  return s;
-}
 
 double twice_area(const Vec3d* d, int n) {
   Vec3d a{};
@@ -33,14 +16,34 @@ double twice_area(const Vec3d* d, int n) {
 
 }  // namespace
 
+AreaSlab area_slab(const PreparedAreaLight<double>& light, const AreaView<double>& view, const Vec3d& p) {
+  const double margin = kLightPlaneMargin * (view.height + light.radius);
+  AreaSlab s;
+  s.beyond_light = {view.normal, light.center + view.normal * margin};
+  s.before_p = {-view.normal, p - view.normal * (view.height * kApexMargin)};
+  return s;
+}
+
+Rect2 light_rectangle(const AreaView<double>& view, const ClipPolygon<double>& horizon_clipped) {
+  Rect2 r;
+  for (int i = 0; i < horizon_clipped.count; ++i)
+    r.grow(dot(view.u, horizon_clipped.d[i]), dot(view.v, horizon_clipped.d[i]));
+  return r;
+}
+
+bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const Vec3d& p, bool* front) {
+  if (culled_back_face(triangles, index, p)) return false;
+  const auto& tri = triangles.corners[index];
+  const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
+  const double side = dot(n_tri, tri[0] - p);
+  if (!(std::abs(side) > kEdgeOn * length(n_tri) * length(tri[0] - p))) return false;  // edge-on or zero area
+  if (front) *front = side < 0;
+  return true;
+}
+
 ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const AreaView<double>& view,
-                                const ClipPolygon<double>& horizon_clipped, const Vec3d& p) {
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (int i = 0; i < horizon_clipped.count; ++i) {
-    const double x = dot(view.u, horizon_clipped.d[i]), y = dot(view.v, horizon_clipped.d[i]);
-    x0 = std::min(x0, x); x1 = std::max(x1, x);
-    y0 = std::min(y0, y); y1 = std::max(y1, y);
-  }
+                                const Rect2& rect, const Vec3d& p) {
+  const double x0 = rect.x0, x1 = rect.x1, y0 = rect.y0, y1 = rect.y1;
   const Vec3d corner[4] = {light.center + view.u * x0 + view.v * y0, light.center + view.u * x1 + view.v * y0,
                            light.center + view.u * x1 + view.v * y1, light.center + view.u * x0 + view.v * y1};
   const Vec3d middle = light.center + view.u * (0.5 * (x0 + x1)) + view.v * (0.5 * (y0 + y1));
@@ -52,10 +55,15 @@ ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const Ar
     if (dot(normal, middle - p) < 0) normal = -normal;
     if (length_squared(normal) > 0) volume.planes.push_back({normal, p});
   }
-  const Slab slab = slab_of(light, view, p);
+  const AreaSlab slab = area_slab(light, view, p);
   volume.planes.push_back(slab.beyond_light);
   volume.planes.push_back(slab.before_p);
   return volume;
+}
+
+ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const AreaView<double>& view,
+                                const ClipPolygon<double>& horizon_clipped, const Vec3d& p) {
+  return area_shadow_volume(light, view, light_rectangle(view, horizon_clipped), p);
 }
 
 AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const AreaView<double>& view,
@@ -65,7 +73,7 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
   occluders.triangles_in_volume(volume, p, scratch.candidates);
   if (scratch.candidates.empty()) return AreaVisibility::kUnoccluded;
 
-  const Slab slab = slab_of(light, view, p);
+  const AreaSlab slab = area_slab(light, view, p);
   const std::vector<HalfSpace> slab_planes{slab.beyond_light, slab.before_p};
   const double area_floor = kPieceAreaFloor * 2 * light.area;
   LightPieces& pieces = scratch.pieces;
@@ -80,12 +88,10 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
   std::vector<OccluderCone>& cones = scratch.cones;
   cones.clear();
   for (std::uint32_t index : scratch.candidates) {
-    if (culled_back_face(occluders.triangles(), index, p)) continue;
+    bool front = false;
+    if (!is_occluder(occluders.triangles(), index, p, &front)) continue;
     const auto& tri = occluders.triangles().corners[index];
-    const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
-    const double side = dot(n_tri, tri[0] - p);
-    if (!(std::abs(side) > kEdgeOn * length(n_tri) * length(tri[0] - p))) continue;  // edge-on or zero area
-    const double sigma = side > 0 ? 1.0 : -1.0;
+    const double sigma = front ? -1.0 : 1.0;
     const SmallPolygon part = clip_triangle(tri, slab_planes);
     if (part.count < 3) continue;
     // One plane through P per edge of the clipped occluder; inside the cone: dot(k, x - P) >= 0.
@@ -105,7 +111,7 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
     }
     const double pad = 1e-9 * (light.radius + std::abs(foot.x) + std::abs(foot.y));
     cone.shadow.x0 -= pad; cone.shadow.x1 += pad; cone.shadow.y0 -= pad; cone.shadow.y1 += pad;
-    cone.front = side < 0;
+    cone.front = front;
     cone.size = (cone.shadow.x1 - cone.shadow.x0) * (cone.shadow.y1 - cone.shadow.y0);
     cone.index = index;
     cones.push_back(cone);

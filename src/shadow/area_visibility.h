@@ -88,8 +88,33 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
                                    const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
                                    const OccluderBvh& occluders, AreaShadowScratch& scratch);
 
-// The volume that the BVH is asked about (exposed for tests and the plan).
+// The volume that the BVH is asked about (exposed for tests and the plan): the pyramid from P
+// over the rectangle `rect` (in the view's (u, v) relative to the light's centre; the bounding
+// rectangle of the horizon-clipped light in the second form), cut to the slab.
 ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const AreaView<double>& view,
                                 const ClipPolygon<double>& horizon_clipped, const Vec3d& p);
+ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const AreaView<double>& view,
+                                const Rect2& rect, const Vec3d& p);
+
+// The slab strictly between the light's plane and P in which occluders count: parts within
+// kLightPlaneMargin (h + light radius) of the light's plane (a fixture lying on the light) and
+// within kApexMargin h of P's level are left out.
+inline constexpr double kLightPlaneMargin = 1e-7;
+inline constexpr double kApexMargin = 1e-9;
+struct AreaSlab {
+  HalfSpace beyond_light;  // height above the light's plane >= margin
+  HalfSpace before_p;      // height <= h (1 - apex margin)
+};
+AreaSlab area_slab(const PreparedAreaLight<double>& light, const AreaView<double>& view, const Vec3d& p);
+
+// The bounding rectangle of the horizon-clipped light in the view's (u, v).
+Rect2 light_rectangle(const AreaView<double>& view, const ClipPolygon<double>& horizon_clipped);
+
+// Whether a triangle hides anything from P (not a culled back face of a closed surface, not seen
+// edge-on, not of zero area; triangles touching P are left out by the BVH queries already), and
+// if so whether it faces P (then its central projection onto the light is counter-clockwise in
+// the view's (u, v), whose normal points toward P).
+inline constexpr double kEdgeOn = 1e-12;
+bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const Vec3d& p, bool* front);
 
 }  // namespace vlit

@@ -56,10 +56,20 @@ Aabb padded(Aabb b) {
   return b;
 }
 
+// The box lies wholly outside the half-space (its corner farthest along the normal is behind the
+// plane by more than the rounding of the per-triangle test could explain).
+bool box_outside(const Aabb& box, const HalfSpace& h) {
+  const Vec3d far{h.normal.x >= 0 ? box.hi.x : box.lo.x, h.normal.y >= 0 ? box.hi.y : box.lo.y,
+                  h.normal.z >= 0 ? box.hi.z : box.lo.z};
+  const Vec3d w = far - h.origin;
+  const double s = dot(h.normal, w);
+  return s < -1e-9 * length(h.normal) * (length(w) + length(box.hi - box.lo));
+}
+
 }  // namespace
 
 OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
-    : triangles_(std::move(triangles)), brute_force_(brute_force) {
+    : triangles_(std::move(triangles)), edges_(edges_of(triangles_)), brute_force_(brute_force) {
   const std::size_t n = triangles_.size();
   boxes_.resize(n);
   std::vector<Vec3d> centroids(n);
@@ -152,6 +162,10 @@ void OccluderBvh::triangles_in_volume(const ConvexVolume& volume, const Vec3d& s
     const std::uint32_t self = stack[--top];
     const Node& node = nodes_[self];
     if (!node.box.overlaps(query)) continue;
+    bool outside = false;
+    for (const HalfSpace& h : volume.planes)
+      if ((outside = box_outside(node.box, h))) break;
+    if (outside) continue;
     if (node.count > 0) {
       for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
         if (test(order_[i])) out.push_back(order_[i]);

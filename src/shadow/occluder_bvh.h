@@ -5,6 +5,7 @@
 //   and a light), sorted by triangle index.
 // Both skip the triangles that touch a given vertex position (occluder_triangles.h, "touches").
 //
+// triangles_in_volume skips a node whose box lies wholly outside one of the volume's half-spaces.
 // Build: binary tree, median split of the triangles' centroids along the widest axis of their
 // bounds, leaves of ≤ kLeafSize triangles; O(n log n). Nodes are stored depth-first in one array.
 // The brute-force mode tests every triangle with the same per-triangle tests and gives identical
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "shadow/convex_volume.h"
+#include "shadow/occluder_edges.h"
 #include "shadow/occluder_triangles.h"
 
 namespace vlit {
@@ -28,6 +30,7 @@ class OccluderBvh {
   explicit OccluderBvh(OccluderTriangles triangles, bool brute_force = false);
 
   const OccluderTriangles& triangles() const { return triangles_; }
+  const OccluderEdges& edges() const { return edges_; }  // shared edges and their triangles
   bool brute_force() const { return brute_force_; }
   std::size_t node_count() const { return nodes_.size(); }
   const Aabb& bounds() const { return bounds_; }  // of every triangle
@@ -49,6 +52,7 @@ class OccluderBvh {
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
 
   OccluderTriangles triangles_;
+  OccluderEdges edges_;
   Aabb bounds_;
   std::vector<Aabb> boxes_;           // per triangle
   std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf

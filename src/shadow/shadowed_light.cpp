@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "shadow/area_silhouette.h"
 #include "shadow/area_visibility.h"
 #include "shadow/linear_visibility.h"
 
@@ -88,9 +89,21 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   clip_to_horizon(light, view, sp.n, horizon);
   if (horizon.count < 3) return {};
   thread_local AreaShadowScratch scratch;
-  if (visible_area_pieces(light, view, horizon, sp.p, occluders, scratch) == AreaVisibility::kUnoccluded)
-    return unoccluded();
-  const LightPieces& pieces = scratch.pieces;
+  thread_local AreaSilhouetteScratch silhouette;
+  const LightPieces* visible = nullptr;
+  if (options.area_shadows == AreaShadowMethod::kSilhouette) {
+    switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette)) {
+      case SilhouetteVisibility::kUnoccluded: return unoccluded();
+      case SilhouetteVisibility::kPieces: visible = &silhouette.pieces; break;
+      case SilhouetteVisibility::kUndecided: break;
+    }
+  }
+  if (!visible) {
+    if (visible_area_pieces(light, view, horizon, sp.p, occluders, scratch) == AreaVisibility::kUnoccluded)
+      return unoccluded();
+    visible = &scratch.pieces;
+  }
+  const LightPieces& pieces = *visible;
   Response<double> r;
   ClipPolygon<double> piece;
   auto load = [&](std::size_t i) {

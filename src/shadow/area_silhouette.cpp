@@ -1,0 +1,447 @@
+#include "shadow/area_silhouette.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/robust_math.h"
+
+namespace vlit {
+namespace {
+
+// R is the light's bounding rectangle grown by this fraction of its size (plus a floor), so that
+// L's edges never lie on R's sides.
+constexpr double kRectangleGrowth = 0.01171875;  // 3/256
+// A shadow ray whose crossing lies within this fraction of a triangle's edge (in barycentric
+// terms) or of the slab's planes is not counted: another point is tried.
+constexpr double kRayAmbiguity = 1e-9;
+constexpr int kMaxReferenceRays = 8;
+
+struct Frame {
+  Vec3d p, center, u, v, normal;
+  double height = 0, foot_u = 0, foot_v = 0;
+  Rect2 rect;
+  HalfSpace side[4];  // pyramid from P over R: bottom (v = y0), right (u = x1), top (v = y1), left (u = x0)
+  AreaSlab slab;
+};
+
+double orient2(double ax, double ay, double bx, double by, double cx, double cy) {
+  return difference_of_products(bx - ax, cy - ay, by - ay, cx - ax);
+}
+
+struct ClippedPoint {
+  Vec3d x;
+  int side = -1;  // the pyramid side that produced it, or -1
+};
+
+// Clips the 3D segment a -> b to the pyramid's four sides; false if nothing is left.
+bool clip_to_pyramid(const Frame& f, ClippedPoint& a, ClippedPoint& b) {
+  for (int k = 0; k < 4; ++k) {
+    const double sa = f.side[k].signed_distance(a.x), sb = f.side[k].signed_distance(b.x);
+    if (sa < 0 && sb < 0) return false;
+    if (sa >= 0 && sb >= 0) continue;
+    const Vec3d cut = a.x + (b.x - a.x) * (sa / (sa - sb));
+    if (sa < 0) a = {cut, k};
+    else b = {cut, k};
+  }
+  return true;
+}
+
+// Central projection from P onto the light's plane, in (u, v) relative to the light's centre; a
+// point made by a pyramid side is put exactly on R's side.
+void project(const Frame& f, const ClippedPoint& c, double& pu, double& pv) {
+  const Vec3d w = c.x - f.p;
+  const double scale = f.height / -dot(f.normal, w);
+  pu = f.foot_u + dot(f.u, w) * scale;
+  pv = f.foot_v + dot(f.v, w) * scale;
+  switch (c.side) {
+    case 0: pv = f.rect.y0; break;
+    case 1: pu = f.rect.x1; break;
+    case 2: pv = f.rect.y1; break;
+    case 3: pu = f.rect.x0; break;
+    default: break;
+  }
+}
+
+void add_segment(const Frame& f, ClippedPoint a, ClippedPoint b, int weight, std::vector<SilhouetteSegment>& out) {
+  if (!clip_to_pyramid(f, a, b)) return;
+  SilhouetteSegment s;
+  project(f, a, s.u0, s.v0);
+  project(f, b, s.u1, s.v1);
+  s.weight = weight;
+  if (s.u0 == s.u1 && s.v0 == s.v1) return;
+  if (!std::isfinite(s.u0) || !std::isfinite(s.v0) || !std::isfinite(s.u1) || !std::isfinite(s.v1)) return;
+  out.push_back(s);
+}
+
+// The point where the side x -> y of a triangle crosses the plane h, computed from the side's
+// endpoints in lexicographic order so that every triangle (and edge) sharing the side gets the
+// same bits.
+Vec3d crossing(const Vec3d& x, const Vec3d& y, const HalfSpace& h) {
+  const bool x_first = lexicographic_less(x, y);
+  const Vec3d& a = x_first ? x : y;
+  const Vec3d& b = x_first ? y : x;
+  const double sa = h.signed_distance(a), sb = h.signed_distance(b);
+  return a + (b - a) * (sa / (sa - sb));
+}
+
+// +1: the triangle faces P (its projection is counter-clockwise), -1: it faces away, 0: it hides
+// nothing (is_occluder, or it touches P).
+int facing_of(const OccluderTriangles& triangles, std::uint32_t t, const Vec3d& p, AreaSilhouetteScratch& s) {
+  if (s.facing_stamp[t] == s.stamp) return s.facing[t];
+  bool front = false;
+  int f = 0;
+  if (!touches(triangles.corners[t], p) && is_occluder(triangles, t, p, &front)) f = front ? 1 : -1;
+  s.facing_stamp[t] = s.stamp;
+  s.facing[t] = static_cast<std::int8_t>(f);
+  return f;
+}
+
+// The silhouette segments of the candidates: weighted edges, and chords where a triangle leaves
+// the slab.
+void collect_silhouette(const Frame& f, const OccluderBvh& occluders, AreaSilhouetteScratch& s) {
+  const OccluderTriangles& triangles = occluders.triangles();
+  const OccluderEdges& edges = occluders.edges();
+  const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
+  for (std::uint32_t t : s.candidates) {
+    const int ft = facing_of(triangles, t, f.p, s);
+    if (ft == 0) continue;
+    const auto& c = triangles.corners[t];
+    for (int j = 0; j < 3; ++j) {
+      const std::uint32_t e = edges.edge_of[t][j];
+      if (s.edge_stamp[e] == s.stamp) continue;
+      s.edge_stamp[e] = s.stamp;
+      int weight = 0;
+      for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
+        const std::uint32_t code = edges.incident[k];
+        weight += facing_of(triangles, code / 3, f.p, s) * edges.direction_of[code / 3][code % 3];
+      }
+      if (weight == 0) continue;
+      const Vec3d& a = edges.endpoints[e][0];
+      const Vec3d& b = edges.endpoints[e][1];
+      ClippedPoint ca{a}, cb{b};
+      bool empty = false;
+      for (const HalfSpace& h : slab) {
+        const double sa = h.signed_distance(a), sb = h.signed_distance(b);
+        if (sa < 0 && sb < 0) { empty = true; break; }
+        if (sa < 0) ca.x = a + (b - a) * (sa / (sa - sb));
+        if (sb < 0) cb.x = a + (b - a) * (sa / (sa - sb));
+      }
+      if (!empty) add_segment(f, ca, cb, weight, s.segments);
+    }
+    // Chords: where the triangle's boundary leaves the slab through one of its planes, the kept
+    // part is closed along the plane from the exit point to the entry point.
+    for (const HalfSpace& h : slab) {
+      const double d[3] = {h.signed_distance(c[0]), h.signed_distance(c[1]), h.signed_distance(c[2])};
+      const bool in[3] = {d[0] >= 0, d[1] >= 0, d[2] >= 0};
+      if (in[0] == in[1] && in[1] == in[2]) continue;
+      ClippedPoint exit, entry;
+      for (int j = 0; j < 3; ++j) {
+        const int k = (j + 1) % 3;
+        if (in[j] && !in[k]) exit.x = crossing(c[j], c[k], h);
+        if (!in[j] && in[k]) entry.x = crossing(c[j], c[k], h);
+      }
+      add_segment(f, exit, entry, ft, s.segments);
+    }
+  }
+}
+
+// Number of occluder triangles (clipped to the slab) that the segment P -> x crosses, or -1 if a
+// crossing is too close to an edge of a triangle or to a plane of the slab to be counted.
+int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaSilhouetteScratch& s) {
+  const OccluderTriangles& triangles = occluders.triangles();
+  const Vec3d dir = x - f.p;
+  const double plane_tol = kRayAmbiguity * (f.height + (f.rect.x1 - f.rect.x0) + (f.rect.y1 - f.rect.y0));
+  int count = 0;
+  for (std::uint32_t t : s.candidates) {
+    if (facing_of(triangles, t, f.p, s) == 0) continue;
+    const auto& c = triangles.corners[t];
+    const Vec3d e1 = c[1] - c[0], e2 = c[2] - c[0];
+    const Vec3d pvec = cross(dir, e2);
+    const double det = dot(e1, pvec);
+    if (!(std::abs(det) > 0)) continue;
+    const double inv = 1.0 / det;
+    const Vec3d tvec = f.p - c[0];
+    const double b1 = dot(tvec, pvec) * inv;
+    const Vec3d qvec = cross(tvec, e1);
+    const double b2 = dot(dir, qvec) * inv;
+    const double b0 = 1 - b1 - b2;
+    const double t_hit = dot(e2, qvec) * inv;
+    if (!(t_hit > 0 && t_hit < 1)) continue;
+    const double margin = std::min({b0, b1, b2});
+    if (margin < -kRayAmbiguity) continue;
+    const Vec3d hit = f.p + dir * t_hit;
+    const double d0 = f.slab.beyond_light.signed_distance(hit), d1 = f.slab.before_p.signed_distance(hit);
+    if (d0 < -plane_tol || d1 < -plane_tol) continue;
+    if (margin <= kRayAmbiguity || d0 <= plane_tol || d1 <= plane_tol) return -1;
+    ++count;
+  }
+  return count;
+}
+
+double u_at(const SilhouetteSegment& s, double v) {  // s stored with v0 <= v1
+  if (v <= s.v0) return s.u0;
+  if (v >= s.v1) return s.u1;
+  return s.u0 + (s.u1 - s.u0) * ((v - s.v0) / (s.v1 - s.v0));
+}
+
+}  // namespace
+
+SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>& light,
+                                                 const AreaView<double>& view,
+                                                 const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
+                                                 const OccluderBvh& occluders, AreaSilhouetteScratch& s) {
+  ++s.queries;
+  Frame f;
+  f.p = p;
+  f.center = light.center;
+  f.u = view.u;
+  f.v = view.v;
+  f.normal = view.normal;
+  f.height = view.height;
+  f.foot_u = dot(view.u, -view.D);
+  f.foot_v = dot(view.v, -view.D);
+  const Rect2 tight = light_rectangle(view, horizon_clipped);
+  const double grow = kRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light.radius});
+  f.rect = {tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
+  f.slab = area_slab(light, view, p);
+
+  const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
+  occluders.triangles_in_volume(volume, p, s.candidates);
+  if (s.candidates.empty()) return SilhouetteVisibility::kUnoccluded;
+  // The pyramid's sides, inward, in the order bottom, right, top, left (project() relies on it).
+  const Vec3d corner[4] = {f.center + f.u * f.rect.x0 + f.v * f.rect.y0, f.center + f.u * f.rect.x1 + f.v * f.rect.y0,
+                           f.center + f.u * f.rect.x1 + f.v * f.rect.y1, f.center + f.u * f.rect.x0 + f.v * f.rect.y1};
+  const Vec3d middle = f.center + f.u * (0.5 * (f.rect.x0 + f.rect.x1)) + f.v * (0.5 * (f.rect.y0 + f.rect.y1));
+  for (int k = 0; k < 4; ++k) {
+    Vec3d normal = cross(corner[k] - p, corner[(k + 1) % 4] - p);
+    if (dot(normal, middle - p) < 0) normal = -normal;
+    f.side[k] = {normal, p};
+  }
+
+  const std::size_t triangle_count = occluders.triangles().size();
+  if (s.facing.size() != triangle_count || s.edge_stamp.size() != occluders.edges().size()) {
+    s.facing.assign(triangle_count, 0);
+    s.facing_stamp.assign(triangle_count, 0);
+    s.edge_stamp.assign(occluders.edges().size(), 0);
+    s.stamp = 0;
+  }
+  if (++s.stamp == 0) {  // wrapped: forget every stamp
+    std::fill(s.facing_stamp.begin(), s.facing_stamp.end(), 0);
+    std::fill(s.edge_stamp.begin(), s.edge_stamp.end(), 0);
+    s.stamp = 1;
+  }
+  s.segments.clear();
+  collect_silhouette(f, occluders, s);
+  s.silhouette_segments += static_cast<long>(s.segments.size());
+  LightPieces& pieces = s.pieces;
+  pieces.clear();
+  if (s.segments.empty()) {
+    // Nothing of the candidates bounds a shadow inside R: the light is wholly visible or wholly
+    // hidden; one shadow ray tells.
+    const int d = depth_at(f, f.center + f.u * (0.5 * (tight.x0 + tight.x1)) + f.v * (0.5 * (tight.y0 + tight.y1)),
+                           occluders, s);
+    if (d < 0) return SilhouetteVisibility::kUndecided;
+    if (d == 0) pieces.add(horizon_clipped.d.data(), horizon_clipped.count, view.u, view.v);
+    return SilhouetteVisibility::kPieces;
+  }
+
+  // L's edges, weight -1 for each turn of L around a point (so t = d + 1 - [x in L]).
+  double twice_area = 0;
+  const int n_light = horizon_clipped.count;
+  std::vector<std::pair<double, double>> light_uv(n_light);
+  for (int i = 0; i < n_light; ++i)
+    light_uv[i] = {dot(view.u, horizon_clipped.d[i]), dot(view.v, horizon_clipped.d[i])};
+  for (int i = 0; i < n_light; ++i) {
+    const auto& [ax, ay] = light_uv[i];
+    const auto& [bx, by] = light_uv[(i + 1) % n_light];
+    twice_area += ax * by - bx * ay;
+  }
+  const int light_turn = twice_area > 0 ? 1 : -1;
+  for (int i = 0; i < n_light; ++i) {
+    const auto& [ax, ay] = light_uv[i];
+    const auto& [bx, by] = light_uv[(i + 1) % n_light];
+    if (ax != bx || ay != by) s.segments.push_back({ax, ay, bx, by, -light_turn});
+  }
+
+  // Steps of t along R's left side, and segments stored bottom-up with their step across.
+  std::vector<SilhouetteSegment>& seg = s.segments;
+  std::vector<int> step(seg.size());
+  s.left_steps.clear();
+  for (std::size_t i = 0; i < seg.size(); ++i) {
+    SilhouetteSegment& g = seg[i];
+    const bool start_left = g.u0 == f.rect.x0, end_left = g.u1 == f.rect.x0;
+    if (start_left && !end_left) s.left_steps.push_back({g.v0, g.weight});
+    if (end_left && !start_left) s.left_steps.push_back({g.v1, -g.weight});
+    // Crossing an upward segment from left to right leaves its left side: t drops by its weight.
+    step[i] = g.v1 > g.v0 ? -g.weight : g.weight;
+    if (g.v1 < g.v0) {
+      std::swap(g.u0, g.u1);
+      std::swap(g.v0, g.v1);
+    }
+  }
+
+  // Events: R's bottom and top, every endpoint, every proper crossing, every left step.
+  std::vector<double>& events = s.events;
+  events.clear();
+  events.push_back(f.rect.y0);
+  events.push_back(f.rect.y1);
+  auto add_event = [&](double v) { events.push_back(std::min(std::max(v, f.rect.y0), f.rect.y1)); };
+  std::vector<int>& order = s.order;
+  order.clear();
+  for (std::size_t i = 0; i < seg.size(); ++i)
+    if (seg[i].v1 > seg[i].v0) {
+      order.push_back(static_cast<int>(i));
+      add_event(seg[i].v0);
+      add_event(seg[i].v1);
+    }
+  for (const auto& [v, w] : s.left_steps) add_event(v);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return seg[a].v0 < seg[b].v0 || (seg[a].v0 == seg[b].v0 && a < b); });
+  {
+    std::vector<int>& active = s.active;
+    active.clear();
+    for (int i : order) {
+      const SilhouetteSegment& a = seg[i];
+      std::size_t kept = 0;
+      for (int j : active) {
+        if (seg[j].v1 <= a.v0) continue;
+        active[kept++] = j;
+        const SilhouetteSegment& b = seg[j];
+        if (std::max(a.u0, a.u1) < std::min(b.u0, b.u1) || std::max(b.u0, b.u1) < std::min(a.u0, a.u1)) continue;
+        const double o1 = orient2(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0), o2 = orient2(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1);
+        if (!((o1 < 0 && o2 > 0) || (o1 > 0 && o2 < 0))) continue;
+        const double o3 = orient2(b.u0, b.v0, b.u1, b.v1, a.u0, a.v0), o4 = orient2(b.u0, b.v0, b.u1, b.v1, a.u1, a.v1);
+        if (!((o3 < 0 && o4 > 0) || (o3 > 0 && o4 < 0))) continue;
+        add_event(b.v0 + (b.v1 - b.v0) * (o1 / (o1 - o2)));
+      }
+      active.resize(kept);
+      active.push_back(i);
+    }
+  }
+  std::sort(events.begin(), events.end());
+  events.erase(std::unique(events.begin(), events.end()), events.end());
+  const int slabs = static_cast<int>(events.size()) - 1;
+
+  // Per slab, the segments spanning it, sorted by u at its middle.
+  std::vector<int>& first = s.slab_first;
+  std::vector<int>& members = s.slab_segments;
+  first.assign(1, 0);
+  members.clear();
+  {
+    std::vector<int>& active = s.active;
+    active.clear();
+    std::size_t next = 0;
+    std::vector<std::pair<double, int>> sorted;
+    for (int k = 0; k < slabs; ++k) {
+      const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
+      while (next < order.size() && seg[order[next]].v0 <= lo) active.push_back(order[next++]);
+      std::size_t kept = 0;
+      for (int j : active)
+        if (seg[j].v1 > lo) active[kept++] = j;
+      active.resize(kept);
+      sorted.clear();
+      for (int j : active)
+        if (seg[j].v1 >= hi) sorted.push_back({u_at(seg[j], mid), j});
+      std::sort(sorted.begin(), sorted.end());
+      for (const auto& [u, j] : sorted) members.push_back(j);
+      first.push_back(static_cast<int>(members.size()));
+    }
+  }
+  // Left steps summed per event line: t in slab k's leftmost trapezoid is t0 + prefix[k].
+  std::vector<int> prefix(slabs, 0);
+  for (const auto& [v, w] : s.left_steps) {
+    const int k = static_cast<int>(std::lower_bound(events.begin(), events.end(), v) - events.begin());
+    if (k >= 1 && k < slabs) prefix[k] += w;
+  }
+  for (int k = 1; k < slabs; ++k) prefix[k] += prefix[k - 1];
+
+  // Reference: t at a point inside L, from one shadow ray; tall slabs and wide trapezoids first.
+  std::vector<int> by_height(slabs);
+  for (int k = 0; k < slabs; ++k) by_height[k] = k;
+  std::sort(by_height.begin(), by_height.end(), [&](int a, int b) {
+    return events[a + 1] - events[a] > events[b + 1] - events[b] || (events[a + 1] - events[a] == events[b + 1] - events[b] && a < b);
+  });
+  bool have_reference = false;
+  int t0 = 0;
+  int rays = 0;
+  for (int k : by_height) {
+    if (rays >= kMaxReferenceRays || have_reference) break;
+    const double mid = 0.5 * (events[k] + events[k + 1]);
+    const int n = first[k + 1] - first[k];
+    std::vector<std::pair<double, int>> gaps;  // (width, index of the segment on its left)
+    for (int i = 0; i + 1 < n; ++i) {
+      const double a = u_at(seg[members[first[k] + i]], mid), b = u_at(seg[members[first[k] + i + 1]], mid);
+      if (b > a) gaps.push_back({b - a, i});
+    }
+    std::sort(gaps.begin(), gaps.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
+    for (const auto& [width, i] : gaps) {
+      if (rays >= kMaxReferenceRays) break;
+      const double a = u_at(seg[members[first[k] + i]], mid);
+      const double u = a + 0.5 * width;
+      const Vec3d x = f.u * u + f.v * mid;  // relative to the light's centre
+      if (winding_number(horizon_clipped, view, x) == 0) continue;
+      ++rays;
+      const int d = depth_at(f, f.center + x, occluders, s);
+      if (d < 0) continue;
+      int left = 0;
+      for (int j = 0; j <= i; ++j) left += step[members[first[k] + j]];
+      t0 = d - left - prefix[k];  // t inside L is d; t in the leftmost trapezoid of slab 0
+      have_reference = true;
+      break;
+    }
+  }
+  if (!have_reference) {
+    ++s.undecided;
+    return SilhouetteVisibility::kUndecided;
+  }
+
+  // The trapezoids with t = 0, merged upward while the same two segments bound them.
+  struct Open { int a, b; double v_start; };
+  std::vector<Open> open, now;
+  auto close = [&](const Open& o, double v_end) {
+    const SilhouetteSegment& a = seg[o.a];
+    const SilhouetteSegment& b = seg[o.b];
+    double a0 = u_at(a, o.v_start), b0 = u_at(b, o.v_start), a1 = u_at(a, v_end), b1 = u_at(b, v_end);
+    if (b0 < a0) a0 = b0 = 0.5 * (a0 + b0);
+    if (b1 < a1) a1 = b1 = 0.5 * (a1 + b1);
+    const double corner_uv[4][2] = {{a0, o.v_start}, {b0, o.v_start}, {b1, v_end}, {a1, v_end}};
+    Vec3d points[4];
+    int n = 0;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3d x = f.u * corner_uv[i][0] + f.v * corner_uv[i][1];
+      if (n == 0 || !(x == points[n - 1])) points[n++] = x;
+    }
+    if (n > 1 && points[n - 1] == points[0]) --n;
+    if (n < 3) return;
+    if (light_turn < 0) std::reverse(points, points + n);
+    pieces.add(points, n, view.u, view.v);
+  };
+  for (int k = 0; k < slabs; ++k) {
+    int t = t0 + prefix[k];
+    if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;
+    now.clear();
+    const int n = first[k + 1] - first[k];
+    for (int i = 0; i < n; ++i) {
+      t += step[members[first[k] + i]];
+      if (t < 0) return ++s.undecided, SilhouetteVisibility::kUndecided;
+      if (t == 0 && i + 1 < n) {
+        const int a = members[first[k] + i], b = members[first[k] + i + 1];
+        double v_start = events[k];
+        for (const Open& o : open)
+          if (o.a == a && o.b == b) v_start = o.v_start;
+        now.push_back({a, b, v_start});
+      }
+    }
+    if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;
+    for (const Open& o : open) {
+      bool continued = false;
+      for (const Open& c : now) continued = continued || (c.a == o.a && c.b == o.b);
+      if (!continued) close(o, events[k]);
+    }
+    std::swap(open, now);
+  }
+  for (const Open& o : open) close(o, events[slabs]);
+  s.visible_pieces += static_cast<long>(pieces.size());
+  return SilhouetteVisibility::kPieces;
+}
+
+}  // namespace vlit

@@ -1,0 +1,72 @@
+// Which part of an area light a point P sees, from the silhouettes of what hides it (Picott 1992
+// eq. 10), at a cost that follows the silhouette edges instead of the occluder triangles.
+//
+// Method. Project every occluder triangle (clipped to the slab between P and the light,
+// area_visibility.h) from P onto the light's plane; the number of projections covering a point x
+// of the light is its depth d(x), the number of occluder triangles the segment P -> x crosses,
+// and x is visible exactly when d(x) = 0. Each projected triangle is a counter-clockwise (front
+// face) or clockwise (back face) polygon; summed as oriented boundaries, the sides shared by two
+// triangles that face P the same way cancel, and what is left is the silhouette seen from P: the
+// edges between a triangle facing P and one facing away (weight +-2), boundary and non-manifold
+// edges (+-1 per triangle), and the chords where a triangle leaves the slab. d(x) is the winding
+// number of that weighted cycle (soft shadow volumes: Laine, Aila, Assarsson, Lehtinen and
+// Akenine-Moller, "Soft Shadow Volumes for Ray Tracing", SIGGRAPH 2005, count the same depth
+// from silhouette edges with one shadow ray as reference).
+//  1. The silhouette segments are clipped in 3D to the slab and to the pyramid from P over a
+//     rectangle R slightly larger than the horizon-clipped light L, then projected to (u, v).
+//     L's own edges join them with weight -1, so the count t(x) = d(x) + 1 - [x in L] is 0
+//     exactly on the visible part of L.
+//  2. A sweep in v cuts R into slabs at every endpoint and crossing; inside a slab no two
+//     segments cross, so sorted by u at the slab's middle they split it into trapezoids, and t
+//     changes by each segment's weight from one trapezoid to the next.
+//  3. t in one trapezoid comes from one shadow ray (it counts the triangles crossed, and says
+//     so when a crossing is too close to an edge to count; another point is then tried); t in
+//     the leftmost trapezoid of the other slabs follows from the segments that end on R's left
+//     side.
+//  4. The trapezoids with t = 0 are the visible pieces; vertically adjacent ones between the
+//     same two segments are merged. The kernels run on them as on the pieces of
+//     visible_area_pieces.
+// Checks: t >= 0 everywhere and t >= 1 outside L; when one fails (or no shadow ray could be
+// counted) the answer is kUndecided and the caller uses visible_area_pieces, the triangle-by-
+// triangle cutting, which is also the reference of the tests (tests/shadow/silhouette_test.cpp).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "shadow/area_visibility.h"
+
+namespace vlit {
+
+struct SilhouetteSegment {
+  double u0, v0, u1, v1;  // as oriented: from (u0, v0) to (u1, v1)
+  int weight;             // t is larger by `weight` on the segment's left than on its right
+};
+
+struct AreaSilhouetteScratch {
+  std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t> edge_stamp;  // per occluder edge: the query that last weighed it
+  std::vector<std::int8_t> facing;        // per occluder triangle, valid when facing_stamp matches
+  std::vector<std::uint32_t> facing_stamp;
+  std::uint32_t stamp = 0;
+  std::vector<SilhouetteSegment> segments;
+  std::vector<double> events;
+  std::vector<std::pair<double, int>> left_steps;
+  std::vector<int> order, active, slab_first, slab_segments;
+  LightPieces pieces;
+  // Counters for benchmarks and tests.
+  long queries = 0, undecided = 0, silhouette_segments = 0, visible_pieces = 0;
+};
+
+enum class SilhouetteVisibility {
+  kUnoccluded,  // no occluder reaches between P and the light
+  kPieces,      // scratch.pieces holds the visible part (possibly empty: fully hidden)
+  kUndecided,   // a consistency check failed: use visible_area_pieces
+};
+
+SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>& light,
+                                                 const AreaView<double>& view,
+                                                 const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
+                                                 const OccluderBvh& occluders, AreaSilhouetteScratch& scratch);
+
+}  // namespace vlit

@@ -15,6 +15,7 @@ constexpr double kRectangleGrowth = 0.01171875;  // 3/256
 // terms) or of the slab's planes is not counted: another point is tried.
 constexpr double kRayAmbiguity = 1e-9;
 constexpr int kMaxReferenceRays = 8;
+constexpr double kThinSlab = 1e-12;
 
 struct Frame {
   Vec3d p, center, u, v, normal;
@@ -150,9 +151,10 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, AreaSilhou
 int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaSilhouetteScratch& s) {
   const OccluderTriangles& triangles = occluders.triangles();
   const Vec3d dir = x - f.p;
+  occluders.triangles_near_segment(f.p, x, s.ray_candidates);
   const double plane_tol = kRayAmbiguity * (f.height + (f.rect.x1 - f.rect.x0) + (f.rect.y1 - f.rect.y0));
   int count = 0;
-  for (std::uint32_t t : s.candidates) {
+  for (std::uint32_t t : s.ray_candidates) {
     if (facing_of(triangles, t, f.p, s) == 0) continue;
     const auto& c = triangles.corners[t];
     const Vec3d e1 = c[1] - c[0], e2 = c[2] - c[0];
@@ -206,8 +208,8 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   f.slab = area_slab(light, view, p);
 
   const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
-  occluders.triangles_in_volume(volume, p, s.candidates);
-  if (s.candidates.empty()) return SilhouetteVisibility::kUnoccluded;
+  const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
+  occluders.silhouette_candidates(volume, slab, 2, p, s.candidates);
   // The pyramid's sides, inward, in the order bottom, right, top, left (project() relies on it).
   const Vec3d corner[4] = {f.center + f.u * f.rect.x0 + f.v * f.rect.y0, f.center + f.u * f.rect.x1 + f.v * f.rect.y0,
                            f.center + f.u * f.rect.x1 + f.v * f.rect.y1, f.center + f.u * f.rect.x0 + f.v * f.rect.y1};
@@ -236,13 +238,16 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   LightPieces& pieces = s.pieces;
   pieces.clear();
   if (s.segments.empty()) {
-    // Nothing of the candidates bounds a shadow inside R: the light is wholly visible or wholly
-    // hidden; one shadow ray tells.
-    const int d = depth_at(f, f.center + f.u * (0.5 * (tight.x0 + tight.x1)) + f.v * (0.5 * (tight.y0 + tight.y1)),
-                           occluders, s);
-    if (d < 0) return SilhouetteVisibility::kUndecided;
-    if (d == 0) pieces.add(horizon_clipped.d.data(), horizon_clipped.count, view.u, view.v);
-    return SilhouetteVisibility::kPieces;
+    // No silhouette crosses R: the light is wholly visible or wholly hidden; one shadow ray to any
+    // point of R tells (a few points are tried in case a ray grazes an edge).
+    static constexpr double kFractions[kMaxReferenceRays][2] = {
+        {0.5, 0.5}, {0.31, 0.67}, {0.73, 0.29}, {0.19, 0.23}, {0.83, 0.79}, {0.41, 0.13}, {0.61, 0.91}, {0.11, 0.57}};
+    for (const auto& [a, b] : kFractions) {
+      const double u = tight.x0 + a * (tight.x1 - tight.x0), v = tight.y0 + b * (tight.y1 - tight.y0);
+      const int d = depth_at(f, f.center + f.u * u + f.v * v, occluders, s);
+      if (d >= 0) return d == 0 ? SilhouetteVisibility::kUnoccluded : SilhouetteVisibility::kPieces;
+    }
+    return ++s.undecided, SilhouetteVisibility::kUndecided;
   }
 
   // L's edges, weight -1 for each turn of L around a point (so t = d + 1 - [x in L]).
@@ -415,10 +420,18 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     if (light_turn < 0) std::reverse(points, points + n);
     pieces.add(points, n, view.u, view.v);
   };
+  // A slab thinner than this fraction of R (a nearly horizontal segment makes one an ulp high)
+  // cannot order its segments: it is left out (its area is below that fraction of R's).
+  const double thin = kThinSlab * (f.rect.y1 - f.rect.y0);
   for (int k = 0; k < slabs; ++k) {
+    now.clear();
+    if (events[k + 1] - events[k] < thin) {
+      for (const Open& o : open) close(o, events[k]);
+      open.clear();
+      continue;
+    }
     int t = t0 + prefix[k];
     if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;
-    now.clear();
     const int n = first[k + 1] - first[k];
     for (int i = 0; i < n; ++i) {
       t += step[members[first[k] + i]];

@@ -44,7 +44,7 @@ struct SilhouetteSegment {
 };
 
 struct AreaSilhouetteScratch {
-  std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t> candidates, ray_candidates;
   std::vector<std::uint32_t> edge_stamp;  // per occluder edge: the query that last weighed it
   std::vector<std::int8_t> facing;        // per occluder triangle, valid when facing_stamp matches
   std::vector<std::uint32_t> facing_stamp;

@@ -66,6 +66,25 @@ bool box_outside(const Aabb& box, const HalfSpace& h) {
   return s < -1e-9 * length(h.normal) * (length(w) + length(box.hi - box.lo));
 }
 
+// The same test for a half-space with a unit normal, with max-norms in the margin (no roots):
+// max-norms are within sqrt(3) of the Euclidean ones, and the margin is widened by 2 for it.
+bool box_outside_unit(const Aabb& box, const HalfSpace& h) {
+  const Vec3d far{h.normal.x >= 0 ? box.hi.x : box.lo.x, h.normal.y >= 0 ? box.hi.y : box.lo.y,
+                  h.normal.z >= 0 ? box.hi.z : box.lo.z};
+  const Vec3d w = far - h.origin;
+  const Vec3d e = box.hi - box.lo;
+  const double scale = std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z)}) + std::max({e.x, e.y, e.z});
+  return dot(h.normal, w) < -2e-9 * scale;
+}
+
+// The box lies wholly inside the half-space, with the same kind of margin.
+bool box_inside(const Aabb& box, const HalfSpace& h) {
+  const Vec3d near{h.normal.x >= 0 ? box.lo.x : box.hi.x, h.normal.y >= 0 ? box.lo.y : box.hi.y,
+                   h.normal.z >= 0 ? box.lo.z : box.hi.z};
+  const Vec3d w = near - h.origin;
+  return dot(h.normal, w) > 1e-9 * length(h.normal) * (length(w) + length(box.hi - box.lo));
+}
+
 }  // namespace
 
 OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
@@ -83,7 +102,113 @@ OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
   if (!brute_force_ && n > 0) {
     nodes_.reserve(2 * (n / kLeafSize + 1));
     build(0, static_cast<std::uint32_t>(n), centroids, 0);
+    build_cones();
   }
+}
+
+namespace {
+
+double angle_between(const Vec3d& a, const Vec3d& b) {  // unit vectors; stable near 0 and pi
+  const double d = dot(a, b);
+  if (d < 0) return M_PI - 2 * std::asin(std::min(1.0, length(a + b) / 2));
+  return 2 * std::asin(std::min(1.0, length(a - b) / 2));
+}
+
+}  // namespace
+
+void OccluderBvh::build_cones() {
+  const std::size_t n = triangles_.size();
+  std::vector<Vec3d> unit(n);
+  std::vector<bool> degenerate(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const auto& c = triangles_.corners[t];
+    const Vec3d normal = cross(c[1] - c[0], c[2] - c[0]);
+    const double len = length(normal);
+    degenerate[t] = !(len > 0) || !std::isfinite(len);
+    unit[t] = degenerate[t] ? Vec3d{0, 0, 1} : normal / len;
+  }
+  // The cone of a triangle and its edge neighbours, then of the subtrees, bottom-up (children
+  // are stored after their parent).
+  auto cone_of_triangle = [&](std::uint32_t t) {
+    NormalCone cone;
+    cone.open = edges_.has_open_edge[t] != 0;
+    cone.solid = triangles_.solid.empty() ? -1 : triangles_.solid[t];
+    std::vector<std::uint32_t> members{t};
+    for (int j = 0; j < 3; ++j) {
+      const std::uint32_t e = edges_.edge_of[t][j];
+      for (std::uint32_t k = edges_.first_incident[e]; k < edges_.first_incident[e + 1]; ++k)
+        members.push_back(edges_.incident[k] / 3);
+    }
+    Vec3d sum{};
+    bool unbounded = false;
+    for (std::uint32_t m : members) {
+      sum += unit[m];
+      unbounded = unbounded || degenerate[m];
+    }
+    if (unbounded || !(length(sum) > 1e-6)) return cone;
+    cone.axis = normalize(sum);
+    cone.half_angle = 0;
+    for (std::uint32_t m : members) cone.half_angle = std::max(cone.half_angle, angle_between(cone.axis, unit[m]));
+    return cone;
+  };
+  auto merge = [](const NormalCone& a, const NormalCone& b) {
+    NormalCone m;
+    m.open = a.open || b.open;
+    m.solid = a.solid == b.solid ? a.solid : -2;
+    if (a.half_angle >= M_PI || b.half_angle >= M_PI) return m;
+    const Vec3d sum = a.axis + b.axis;
+    if (!(length(sum) > 1e-6)) return m;
+    m.axis = normalize(sum);
+    m.half_angle = std::max(angle_between(m.axis, a.axis) + a.half_angle, angle_between(m.axis, b.axis) + b.half_angle);
+    if (m.half_angle >= M_PI) m.half_angle = 4;
+    return m;
+  };
+  cones_.assign(nodes_.size(), NormalCone{});
+  auto finish = [](NormalCone& c) {
+    if (c.half_angle < M_PI / 2) {
+      c.cos_half_angle = std::cos(c.half_angle);
+      c.sin_half_angle = std::sin(c.half_angle);
+    }
+  };
+  for (std::size_t i = nodes_.size(); i-- > 0;) {
+    const Node& node = nodes_[i];
+    if (node.count > 0) {
+      NormalCone cone = cone_of_triangle(order_[node.first]);
+      for (std::uint32_t k = node.first + 1; k < node.first + node.count; ++k) cone = merge(cone, cone_of_triangle(order_[k]));
+      cones_[i] = cone;
+    } else {
+      cones_[i] = merge(cones_[i + 1], cones_[node.first]);
+    }
+    finish(cones_[i]);
+  }
+}
+
+// Every triangle of the subtree and every edge neighbour of them faces p the same way (strictly,
+// with a margin far above the rounding of the facing test). The facing of a triangle is the sign
+// of n.(p - x) for any x of its plane; a neighbour's plane passes through the shared edge, which
+// lies in the subtree's box, so bounding the directions from the box to p bounds them all.
+bool OccluderBvh::faces_uniformly(std::uint32_t node, const Vec3d& p) const {
+  const NormalCone& cone = cones_[node];
+  if (cone.open || !(cone.half_angle < M_PI / 2)) return false;
+  const Aabb& box = nodes_[node].box;
+  const Vec3d to_p = p - box.center();
+  const double distance = length(to_p);
+  const double radius = 0.5 * length(box.hi - box.lo);
+  if (!(distance > radius * (1 + 1e-6))) return false;
+  // Angles alpha (axis to p), theta (the cone), phi (the box seen from p) combined through their
+  // cosines and sines: all face p when alpha + theta + phi < pi/2 - margin, all face away when
+  // alpha - theta - phi > pi/2 + margin (theta + phi < pi/2 keeps both sums where cos is monotone).
+  const double sin_phi = radius / distance, cos_phi = std::sqrt(1 - sin_phi * sin_phi);
+  const double cos_theta = cone.cos_half_angle, sin_theta = cone.sin_half_angle;
+  if (!(cos_theta * cos_phi - sin_theta * sin_phi > 0)) return false;  // theta + phi >= pi/2
+  const double cos_alpha = std::clamp(dot(cone.axis, to_p) / distance, -1.0, 1.0);
+  const double sin_alpha = std::sqrt(std::max(0.0, 1 - cos_alpha * cos_alpha));
+  const double cos_spread = cos_theta * cos_phi - sin_theta * sin_phi;  // theta + phi
+  const double sin_spread = sin_theta * cos_phi + cos_theta * sin_phi;
+  constexpr double kMargin = 1e-6;  // radians, far above the rounding of the facing test
+  if (cos_alpha * cos_spread - sin_alpha * sin_spread > kMargin) return true;  // cos(alpha + spread) > 0
+  if (cos_alpha * cos_spread + sin_alpha * sin_spread < -kMargin) return cone.solid != -2;  // cos(alpha - spread) < 0
+  return false;
 }
 
 std::uint32_t OccluderBvh::build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth) {
@@ -175,6 +300,80 @@ void OccluderBvh::triangles_in_volume(const ConvexVolume& volume, const Vec3d& s
     }
   }
   std::sort(out.begin(), out.end());
+}
+
+void OccluderBvh::silhouette_candidates(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
+                                        const Vec3d& p, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  auto near = [&](std::uint32_t tri) {
+    const auto& c = triangles_.corners[tri];
+    for (const HalfSpace& h : volume.planes)
+      if (h.signed_distance(c[0]) < 0 && h.signed_distance(c[1]) < 0 && h.signed_distance(c[2]) < 0) return false;
+    return box_of(c).overlaps(volume.box);
+  };
+  if (brute_force_ || nodes_.empty()) {
+    for (std::uint32_t i = 0; i < triangles_.size(); ++i)
+      if (near(i)) out.push_back(i);
+    return;
+  }
+  silhouette_subtrees(volume, inside, inside_count, p, near, out);
+  std::sort(out.begin(), out.end());
+}
+
+template <class Near>
+void OccluderBvh::silhouette_subtrees(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
+                                      const Vec3d& p, const Near& near, std::vector<std::uint32_t>& out) const {
+  const Aabb query = padded(volume.box);
+  HalfSpace planes[16];
+  const int plane_count = std::min<int>(16, static_cast<int>(volume.planes.size()));
+  for (int k = 0; k < plane_count; ++k) {
+    const double len = length(volume.planes[k].normal);
+    planes[k] = {len > 0 ? volume.planes[k].normal / len : Vec3d{}, volume.planes[k].origin};
+  }
+  std::uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const std::uint32_t self = stack[--top];
+    const Node& node = nodes_[self];
+    if (!node.box.overlaps(query)) continue;
+    bool outside = false;
+    for (int k = 0; k < plane_count && !outside; ++k) outside = box_outside_unit(node.box, planes[k]);
+    if (outside) continue;
+    bool uncut = true;
+    for (int k = 0; k < inside_count && uncut; ++k) uncut = box_inside(node.box, inside[k]);
+    if (uncut && faces_uniformly(self, p)) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+        if (near(order_[i])) out.push_back(order_[i]);
+    } else {
+      stack[top++] = node.first;
+      stack[top++] = self + 1;
+    }
+  }
+}
+
+void OccluderBvh::triangles_near_segment(const Vec3d& a, const Vec3d& b, std::vector<std::uint32_t>& out) const {
+  out.clear();
+  if (brute_force_ || nodes_.empty()) {
+    for (std::uint32_t i = 0; i < triangles_.size(); ++i) out.push_back(i);
+    return;
+  }
+  const Vec3d d = b - a;
+  std::uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const std::uint32_t self = stack[--top];
+    const Node& node = nodes_[self];
+    if (!segment_meets_box(a, d, 0, 1, node.box)) continue;
+    if (node.count > 0) {
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) out.push_back(order_[i]);
+    } else {
+      stack[top++] = node.first;
+      stack[top++] = self + 1;
+    }
+  }
 }
 
 }  // namespace vlit

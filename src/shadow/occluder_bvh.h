@@ -43,13 +43,43 @@ class OccluderBvh {
   // ascending. `out` is cleared first.
   void triangles_in_volume(const ConvexVolume& volume, const Vec3d& skip, std::vector<std::uint32_t>& out) const;
 
+  // The triangles that may carry a silhouette edge seen from p inside the volume, ascending: the
+  // triangles not wholly outside one of the volume's half-spaces (a superset of those that reach
+  // into it), less the subtrees that provably carry none: a subtree
+  // whose triangles and their edge neighbours all face p the same way (normal cone, Sander et
+  // al., "Silhouette Clipping", SIGGRAPH 2000), that lies wholly inside every half-space of
+  // `inside` (no triangle is cut there), holds no open edge (occluder_edges.h) and, if its
+  // triangles face away from p, belong all to one closed solid or all to none (back faces are
+  // culled per solid, so they are then all culled or all kept).
+  // Such a subtree adds nothing to the silhouette: each of its edges has two triangles facing p
+  // the same way, whose projections' boundaries cancel.
+  void silhouette_candidates(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
+                             std::vector<std::uint32_t>& out) const;
+
+  // Every triangle whose (padded) box the segment a -> b meets, unsorted (the caller tests them).
+  void triangles_near_segment(const Vec3d& a, const Vec3d& b, std::vector<std::uint32_t>& out) const;
+
  private:
   struct Node {
     Aabb box;
     std::uint32_t first = 0;  // leaf: first index into order_; inner: index of the right child
     std::uint32_t count = 0;  // leaf: number of triangles; inner: 0 (left child is the next node)
   };
+  // Directions of the normals of a subtree's triangles and of their edge neighbours: within
+  // `half_angle` of `axis` (half_angle >= pi: unbounded).
+  struct NormalCone {
+    Vec3d axis;
+    double half_angle = 4;
+    double cos_half_angle = 0, sin_half_angle = 1;  // set when half_angle < pi / 2
+    bool open = false;   // holds a triangle with an open edge
+    int solid = -1;      // the closed solid all its triangles belong to, -1 for none, -2 if mixed
+  };
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
+  void build_cones();
+  bool faces_uniformly(std::uint32_t node, const Vec3d& p) const;
+  template <class Near>
+  void silhouette_subtrees(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
+                           const Near& near, std::vector<std::uint32_t>& out) const;
 
   OccluderTriangles triangles_;
   OccluderEdges edges_;
@@ -57,6 +87,7 @@ class OccluderBvh {
   std::vector<Aabb> boxes_;           // per triangle
   std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf
   std::vector<Node> nodes_;
+  std::vector<NormalCone> cones_;  // per node
   bool brute_force_;
 };
 

@@ -104,8 +104,9 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, AreaSilhou
   const OccluderEdges& edges = occluders.edges();
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
   for (std::uint32_t t : s.candidates) {
+    // A candidate that hides nothing itself (it touches P, is a culled back face, a needle) still
+    // weighs its edges: its neighbours may lie in subtrees the search skipped.
     const int ft = facing_of(triangles, t, f.p, s);
-    if (ft == 0) continue;
     const auto& c = triangles.corners[t];
     for (int j = 0; j < 3; ++j) {
       const std::uint32_t e = edges.edge_of[t][j];
@@ -132,6 +133,7 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, AreaSilhou
     // Chords: where the triangle's boundary leaves the slab through one of its planes, the kept
     // part is closed along the plane from the exit point to the entry point.
     for (const HalfSpace& h : slab) {
+      if (ft == 0) break;
       const double d[3] = {h.signed_distance(c[0]), h.signed_distance(c[1]), h.signed_distance(c[2])};
       const bool in[3] = {d[0] >= 0, d[1] >= 0, d[2] >= 0};
       if (in[0] == in[1] && in[1] == in[2]) continue;
@@ -157,6 +159,10 @@ int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaS
   for (std::uint32_t t : s.ray_candidates) {
     if (facing_of(triangles, t, f.p, s) == 0) continue;
     const auto& c = triangles.corners[t];
+    bool outside = false;  // wholly outside the slab: not counted, whatever the crossing test says
+    for (const HalfSpace* h : {&f.slab.beyond_light, &f.slab.before_p})
+      outside = outside || (h->signed_distance(c[0]) < 0 && h->signed_distance(c[1]) < 0 && h->signed_distance(c[2]) < 0);
+    if (outside) continue;
     const Vec3d e1 = c[1] - c[0], e2 = c[2] - c[0];
     const Vec3d pvec = cross(dir, e2);
     const double det = dot(e1, pvec);
@@ -253,7 +259,8 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   // L's edges, weight -1 for each turn of L around a point (so t = d + 1 - [x in L]).
   double twice_area = 0;
   const int n_light = horizon_clipped.count;
-  std::vector<std::pair<double, double>> light_uv(n_light);
+  std::vector<std::pair<double, double>>& light_uv = s.light_uv;
+  light_uv.resize(n_light);
   for (int i = 0; i < n_light; ++i)
     light_uv[i] = {dot(view.u, horizon_clipped.d[i]), dot(view.v, horizon_clipped.d[i])};
   for (int i = 0; i < n_light; ++i) {
@@ -270,7 +277,8 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
 
   // Steps of t along R's left side, and segments stored bottom-up with their step across.
   std::vector<SilhouetteSegment>& seg = s.segments;
-  std::vector<int> step(seg.size());
+  std::vector<int>& step = s.step;
+  step.resize(seg.size());
   s.left_steps.clear();
   for (std::size_t i = 0; i < seg.size(); ++i) {
     SilhouetteSegment& g = seg[i];
@@ -332,27 +340,31 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   first.assign(1, 0);
   members.clear();
   {
-    std::vector<int>& active = s.active;
-    active.clear();
+    // The order changes little from one slab to the next (only at its events), so the previous
+    // order is kept and repaired by insertion.
+    std::vector<std::pair<double, int>>& sorted = s.sorted;
+    sorted.clear();
     std::size_t next = 0;
-    std::vector<std::pair<double, int>> sorted;
     for (int k = 0; k < slabs; ++k) {
       const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
-      while (next < order.size() && seg[order[next]].v0 <= lo) active.push_back(order[next++]);
       std::size_t kept = 0;
-      for (int j : active)
-        if (seg[j].v1 > lo) active[kept++] = j;
-      active.resize(kept);
-      sorted.clear();
-      for (int j : active)
-        if (seg[j].v1 >= hi) sorted.push_back({u_at(seg[j], mid), j});
-      std::sort(sorted.begin(), sorted.end());
+      for (const auto& entry : sorted)
+        if (seg[entry.second].v1 > lo) sorted[kept++] = entry;  // the others ended (v1 is an event)
+      sorted.resize(kept);
+      while (next < order.size() && seg[order[next]].v0 <= lo) {
+        if (seg[order[next]].v1 >= hi) sorted.push_back({0, order[next]});
+        ++next;
+      }
+      for (auto& entry : sorted) entry.first = u_at(seg[entry.second], mid);
+      for (std::size_t i = 1; i < sorted.size(); ++i)
+        for (std::size_t j = i; j > 0 && sorted[j] < sorted[j - 1]; --j) std::swap(sorted[j], sorted[j - 1]);
       for (const auto& [u, j] : sorted) members.push_back(j);
       first.push_back(static_cast<int>(members.size()));
     }
   }
   // Left steps summed per event line: t in slab k's leftmost trapezoid is t0 + prefix[k].
-  std::vector<int> prefix(slabs, 0);
+  std::vector<int>& prefix = s.prefix;
+  prefix.assign(slabs, 0);
   for (const auto& [v, w] : s.left_steps) {
     const int k = static_cast<int>(std::lower_bound(events.begin(), events.end(), v) - events.begin());
     if (k >= 1 && k < slabs) prefix[k] += w;
@@ -360,7 +372,8 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   for (int k = 1; k < slabs; ++k) prefix[k] += prefix[k - 1];
 
   // Reference: t at a point inside L, from one shadow ray; tall slabs and wide trapezoids first.
-  std::vector<int> by_height(slabs);
+  std::vector<int>& by_height = s.by_height;
+  by_height.resize(slabs);
   for (int k = 0; k < slabs; ++k) by_height[k] = k;
   std::sort(by_height.begin(), by_height.end(), [&](int a, int b) {
     return events[a + 1] - events[a] > events[b + 1] - events[b] || (events[a + 1] - events[a] == events[b + 1] - events[b] && a < b);
@@ -372,7 +385,8 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     if (rays >= kMaxReferenceRays || have_reference) break;
     const double mid = 0.5 * (events[k] + events[k + 1]);
     const int n = first[k + 1] - first[k];
-    std::vector<std::pair<double, int>> gaps;  // (width, index of the segment on its left)
+    std::vector<std::pair<double, int>>& gaps = s.sorted;  // (width, index of the segment on its left)
+    gaps.clear();
     for (int i = 0; i + 1 < n; ++i) {
       const double a = u_at(seg[members[first[k] + i]], mid), b = u_at(seg[members[first[k] + i + 1]], mid);
       if (b > a) gaps.push_back({b - a, i});
@@ -400,8 +414,10 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   }
 
   // The trapezoids with t = 0, merged upward while the same two segments bound them.
-  struct Open { int a, b; double v_start; };
-  std::vector<Open> open, now;
+  std::vector<AreaSilhouetteScratch::Open>& open = s.open;
+  std::vector<AreaSilhouetteScratch::Open>& now = s.now;
+  open.clear();
+  using Open = AreaSilhouetteScratch::Open;
   auto close = [&](const Open& o, double v_end) {
     const SilhouetteSegment& a = seg[o.a];
     const SilhouetteSegment& b = seg[o.b];

@@ -52,7 +52,11 @@ struct AreaSilhouetteScratch {
   std::vector<SilhouetteSegment> segments;
   std::vector<double> events;
   std::vector<std::pair<double, int>> left_steps;
-  std::vector<int> order, active, slab_first, slab_segments;
+  std::vector<int> order, active, slab_first, slab_segments, step, prefix, by_height;
+  std::vector<std::pair<double, int>> sorted;
+  std::vector<std::pair<double, double>> light_uv;
+  struct Open { int a, b; double v_start; };  // a trapezoid still growing upward
+  std::vector<Open> open, now;
   LightPieces pieces;
   // Counters for benchmarks and tests.
   long queries = 0, undecided = 0, silhouette_segments = 0, visible_pieces = 0;

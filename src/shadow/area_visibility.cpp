@@ -35,6 +35,9 @@ bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const 
   if (culled_back_face(triangles, index, p)) return false;
   const auto& tri = triangles.corners[index];
   const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
+  const double longest = std::max({length_squared(tri[1] - tri[0]), length_squared(tri[2] - tri[1]),
+                                   length_squared(tri[0] - tri[2])});
+  if (!(length(n_tri) > kSliver * longest)) return false;  // a needle: no area, and no reliable plane
   const double side = dot(n_tri, tri[0] - p);
   if (!(std::abs(side) > kEdgeOn * length(n_tri) * length(tri[0] - p))) return false;  // edge-on or zero area
   if (front) *front = side < 0;

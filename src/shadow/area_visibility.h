@@ -114,7 +114,11 @@ Rect2 light_rectangle(const AreaView<double>& view, const ClipPolygon<double>& h
 // edge-on, not of zero area; triangles touching P are left out by the BVH queries already), and
 // if so whether it faces P (then its central projection onto the light is counter-clockwise in
 // the view's (u, v), whose normal points toward P).
+// A triangle whose area is below kSliver times its longest edge squared (a needle, e.g. two
+// corners 1e-18 apart) is no occluder either: it hides a set of negligible area, and its plane,
+// hence any crossing with it, is rounding noise.
 inline constexpr double kEdgeOn = 1e-12;
+inline constexpr double kSliver = 1e-10;
 bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const Vec3d& p, bool* front);
 
 }  // namespace vlit

@@ -124,7 +124,10 @@ void OccluderBvh::build_cones() {
     const auto& c = triangles_.corners[t];
     const Vec3d normal = cross(c[1] - c[0], c[2] - c[0]);
     const double len = length(normal);
-    degenerate[t] = !(len > 0) || !std::isfinite(len);
+    const double longest = std::max({length_squared(c[1] - c[0]), length_squared(c[2] - c[1]), length_squared(c[0] - c[2])});
+    // Needles (is_occluder's kSliver, area_visibility.h) hide nothing: their neighbours' edges
+    // may be silhouettes whatever the facing, so no cone holding them is bounded.
+    degenerate[t] = !(len > 1e-10 * longest) || !std::isfinite(len);
     unit[t] = degenerate[t] ? Vec3d{0, 0, 1} : normal / len;
   }
   // The cone of a triangle and its edge neighbours, then of the subtrees, bottom-up (children

@@ -10,6 +10,7 @@
 #include <map>
 #include <random>
 
+#include "scene/load_scene.h"
 #include "shadow/area_silhouette.h"
 #include "shadow_test_util.h"
 
@@ -237,4 +238,76 @@ TEST_CASE("silhouettes: the answer does not depend on how a surface is triangula
     const double first = shade_shadowed(panel, sp, o, make_bvh(ways[0])).diffuse;
     for (const auto& tris : ways) CHECK(std::abs(shade_shadowed(panel, sp, o, make_bvh(tris)).diffuse - first) <= 1e-12 * open);
   }
+}
+
+TEST_CASE("silhouettes = triangle cuts: a lathe with jittered poles on a floor, lighting its own vertices") {
+  // A pin-like surface of revolution standing on a floor, as exporters write one: its poles are
+  // rings of radius 1e-17, so every pole quad splits into a fan triangle and a needle (two pole
+  // copies 1e-18 apart and one ring point). Needles hide nothing and a vertex's own fan is left
+  // out, so their neighbours' edges are silhouettes whatever way they face, and the subtree search
+  // must not skip them. Receivers: the pin's vertices (poles included) and the floor's.
+  const PreparedLight<double> panel = prepare_light<double>(
+      area_source({{-0.8, 2.6, -1.0}, {0.8, 2.6, -1.0}, {0.8, 2.6, 0.6}, {-0.8, 2.6, 0.6}}));
+  const int rings = 12, segments = 16;
+  auto profile = [](double s) { return 0.06 + 0.05 * std::sin(3.3 * s); };  // radius along the height
+  std::vector<Tri> tris;
+  std::vector<ShadingPoint<double>> points;
+  auto ring_point = [&](int i, int j) {
+    const double s = double(i) / rings, phi = 2 * M_PI * (j % segments) / segments;
+    const double r = i == 0 || i == rings ? 1e-17 : profile(s);
+    return Vec3d{r * std::cos(phi), 0.38 * s, r * std::sin(phi)};
+  };
+  for (int j = 0; j < segments; ++j)
+    for (int i = 0; i < rings; ++i) {
+      const Vec3d a = ring_point(i, j), b = ring_point(i + 1, j), c = ring_point(i + 1, j + 1), d = ring_point(i, j + 1);
+      tris.push_back({a, c, b});
+      tris.push_back({a, d, c});
+    }
+  const int n = 16;
+  auto floor_point = [&](int i, int k) { return Vec3d{-0.4 + 0.8 * i / n, 0, -0.4 + 0.8 * k / n}; };
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < n; ++k) {
+      tris.push_back({floor_point(i, k), floor_point(i, k + 1), floor_point(i + 1, k + 1)});
+      tris.push_back({floor_point(i, k), floor_point(i + 1, k + 1), floor_point(i + 1, k)});
+    }
+  for (int i = 0; i <= n; ++i)
+    for (int k = 0; k <= n; ++k)
+      points.push_back(make_shading_point(floor_point(i, k), Vec3d{0, 1, 0}, Vec3d{0, 1, 5}, 10.0));
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const Vec3d p = ring_point(i, j);
+      const Vec3d normal = i == rings ? Vec3d{0, 1, 0} : normalize(Vec3d{p.x, 0.02, p.z} + Vec3d{0, i == 0 ? -1.0 : 0.0, 0});
+      points.push_back(make_shading_point(p, normal, Vec3d{0, 1, 5}, 10.0));
+    }
+  const OccluderBvh bvh = make_bvh(tris);
+  Agreement agree;
+  for (const auto& sp : points) compare(panel, sp, bvh, SpecularMethod::kExact, agree);
+  MESSAGE("lathe on a floor: " << agree.shadowed << " of " << agree.cases << " shadowed; diffuse " << agree.diffuse
+                               << ", specular " << agree.specular);
+  CHECK(agree.shadowed > 30);
+  CHECK(agree.diffuse <= 1e-9);
+  CHECK(agree.specular <= 1e-7);
+}
+
+TEST_CASE("silhouettes = triangle cuts on the paper's bowling lane (assets/paper)") {
+  // A real scene: pins whose poles are rings of copies 1e-18 apart (needle triangles), pins
+  // standing on the floor (occluders at the receivers' level), 57264 triangles. Every 5th vertex
+  // under each of the three panels.
+  const LoadedScene loaded = load_scene(std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling.glb",
+                                        std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling-area.json", false);
+  const Scene& scene = loaded.scene;
+  REQUIRE(scene.lights.size() == 3);
+  const OccluderBvh bvh(occluders_of(scene));
+  Agreement agree;
+  for (const LightSource& source : scene.lights) {
+    const PreparedLight<double> light = prepare_light<double>(source);
+    for (const ScenePrimitive& prim : scene.primitives)
+      for (std::size_t v = 0; v < prim.positions.size(); v += 5)
+        compare(light, make_shading_point(prim.positions[v], prim.normals[v], Vec3d{0, 1, 5}, 10.0), bvh,
+                SpecularMethod::kNone, agree);
+  }
+  MESSAGE("bowling lane: " << agree.shadowed << " of " << agree.cases << " shadowed; diffuse " << agree.diffuse);
+  CHECK(agree.cases > 15000);
+  CHECK(agree.shadowed > 3000);
+  CHECK(agree.diffuse <= 1e-8);
 }

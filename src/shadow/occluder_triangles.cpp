@@ -35,9 +35,21 @@ OccluderTriangles occluders_of(const Scene& scene) {
   // material is closed only together), else of each primitive alone.
   std::vector<int> solid_of_primitive(scene.primitives.size(), -1);
   auto add_solid = [&](const std::vector<std::size_t>& members) {
+    // Culling back faces is safe only for a surface wound outward (positive signed volume,
+    // divergence theorem): one wound inward (a room modelled from inside) is entered through the
+    // faces that face away from the point, so it is left uncut (no culling).
     Aabb box;
     for (std::size_t p : members)
       for (const Vec3d& v : scene.primitives[p].positions) box.grow(v);
+    const Vec3d origin = box.center();
+    double six_volume = 0;
+    for (std::size_t p : members) {
+      const ScenePrimitive& prim = scene.primitives[p];
+      for (std::size_t t = 0; t + 2 < prim.triangles.size(); t += 3)
+        six_volume += dot(prim.positions[prim.triangles[t]] - origin,
+                          cross(prim.positions[prim.triangles[t + 1]] - origin, prim.positions[prim.triangles[t + 2]] - origin));
+    }
+    if (!(six_volume > 0)) return;
     for (std::size_t p : members) solid_of_primitive[p] = static_cast<int>(out.solid_bounds.size());
     out.solid_bounds.push_back(box);
   };

@@ -246,3 +246,35 @@ TEST_CASE("back faces of a closed mesh are skipped without changing the result")
     }
   }
 }
+
+TEST_CASE("a closed mesh wound inward (a room modelled from inside) hides a light inside it") {
+  // The box's faces point inward. Seen from below, a segment to the light inside enters through
+  // a face that faces away from the point: culling "back faces" would let the light out.
+  std::vector<Tri> tris;
+  add_box(tris, Vec3d{-1.5, -1.5, 0.5}, Vec3d{1.5, 1.5, 3});
+  for (Tri& t : tris) std::swap(t[1], t[2]);  // wound inward
+  ScenePrimitive room;
+  for (const Tri& t : tris)
+    for (const Vec3d& c : t) {
+      room.triangles.push_back(static_cast<std::uint32_t>(room.positions.size()));
+      room.positions.push_back(c);
+      room.normals.push_back({0, 0, 1});
+    }
+  REQUIRE(is_closed_surface({&room}));
+  Scene scene;
+  scene.primitives.push_back(room);
+  const OccluderBvh bvh(occluders_of(scene));
+  const PreparedLight<double> area = prepare_light<double>(area_source(square_light(0.5, 2)));
+  const PreparedLight<double> tube = prepare_light<double>(linear_source({-1, 0.2, 2}, {1, -0.1, 2}, 2));
+  LightSource point_light;  // a point light (the default type), for comparison: one shadow ray
+  point_light.position = {0.1, 0.2, 2};
+  const PreparedLight<double> point = prepare_light<double>(point_light);
+  for (const Vec3d& p : {Vec3d{0, 0, 0}, Vec3d{0.7, -0.4, 0}, Vec3d{2, 1, 0}}) {
+    const ShadingPoint<double> sp = point_up(p);
+    for (const PreparedLight<double>* l : {&area, &tube, &point}) {
+      const ShadeOptions o = options_with(SpecularMethod::kExact);
+      CHECK(shade(*l, sp, o).diffuse > 0);
+      CHECK(shade_shadowed(*l, sp, o, bvh).diffuse == 0);
+    }
+  }
+}

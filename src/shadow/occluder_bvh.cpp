@@ -88,7 +88,7 @@ bool box_inside(const Aabb& box, const HalfSpace& h) {
 }  // namespace
 
 OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
-    : triangles_(std::move(triangles)), edges_(edges_of(triangles_)), brute_force_(brute_force) {
+    : triangles_(std::move(triangles)), brute_force_(brute_force) {
   const std::size_t n = triangles_.size();
   boxes_.resize(n);
   std::vector<Vec3d> centroids(n);
@@ -99,11 +99,30 @@ OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
   }
   order_.resize(n);
   for (std::size_t i = 0; i < n; ++i) order_[i] = static_cast<std::uint32_t>(i);
-  if (!brute_force_ && n > 0) {
+  if (n > 0) {
     nodes_.reserve(2 * (n / kLeafSize + 1));
     build(0, static_cast<std::uint32_t>(n), centroids, 0);
-    build_cones();
   }
+  // The triangles are stored in leaf order (the brute-force mode too, so that both number them
+  // alike): a query reads neighbouring triangles, and their edges, from neighbouring memory.
+  OccluderTriangles sorted;
+  sorted.corners.resize(n);
+  sorted.ids.resize(n);
+  if (!triangles_.solid.empty()) sorted.solid.resize(n);
+  sorted.solid_bounds = triangles_.solid_bounds;
+  std::vector<Aabb> boxes(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    sorted.corners[i] = triangles_.corners[order_[i]];
+    sorted.ids[i] = triangles_.ids[order_[i]];
+    if (!sorted.solid.empty()) sorted.solid[i] = triangles_.solid[order_[i]];
+    boxes[i] = boxes_[order_[i]];
+    order_[i] = static_cast<std::uint32_t>(i);
+  }
+  triangles_ = std::move(sorted);
+  boxes_ = std::move(boxes);
+  edges_ = edges_of(triangles_);
+  if (brute_force_) nodes_.clear();
+  else if (n > 0) build_cones();
 }
 
 namespace {

@@ -29,6 +29,8 @@ class OccluderBvh {
   // brute_force: no tree, every query tests every triangle (the reference for the tests).
   explicit OccluderBvh(OccluderTriangles triangles, bool brute_force = false);
 
+  // The triangles, in the tree's leaf order (not the order given to the constructor; ids says
+  // where each came from).
   const OccluderTriangles& triangles() const { return triangles_; }
   const OccluderEdges& edges() const { return edges_; }  // shared edges and their triangles
   bool brute_force() const { return brute_force_; }

@@ -6,6 +6,41 @@
 
 namespace vlit {
 
+namespace {
+
+// The edges numbered in the order the triangles first name them, so that the edges of
+// neighbouring triangles (stored together) are stored together too.
+OccluderEdges renumbered_by_triangles(const OccluderEdges& in) {
+  const std::size_t edge_count = in.size();
+  constexpr std::uint32_t kUnset = ~std::uint32_t{0};
+  std::vector<std::uint32_t> new_of(edge_count, kUnset), old_of;
+  old_of.reserve(edge_count);
+  for (const auto& sides : in.edge_of)
+    for (std::uint32_t e : sides)
+      if (new_of[e] == kUnset) {
+        new_of[e] = static_cast<std::uint32_t>(old_of.size());
+        old_of.push_back(e);
+      }
+  OccluderEdges out;
+  out.direction_of = in.direction_of;
+  out.has_open_edge = in.has_open_edge;
+  out.edge_of = in.edge_of;
+  for (auto& sides : out.edge_of)
+    for (std::uint32_t& e : sides) e = new_of[e];
+  out.endpoints.reserve(edge_count);
+  out.first_incident.reserve(edge_count + 1);
+  out.incident.reserve(in.incident.size());
+  for (std::uint32_t old : old_of) {
+    out.endpoints.push_back(in.endpoints[old]);
+    out.first_incident.push_back(static_cast<std::uint32_t>(out.incident.size()));
+    for (std::uint32_t k = in.first_incident[old]; k < in.first_incident[old + 1]; ++k) out.incident.push_back(in.incident[k]);
+  }
+  out.first_incident.push_back(static_cast<std::uint32_t>(out.incident.size()));
+  return out;
+}
+
+}  // namespace
+
 OccluderEdges edges_of(const OccluderTriangles& triangles) {
   const std::size_t n = triangles.size();
   struct Side {
@@ -53,7 +88,7 @@ OccluderEdges edges_of(const OccluderTriangles& triangles) {
     i = j;
   }
   edges.first_incident.push_back(static_cast<std::uint32_t>(edges.incident.size()));
-  return edges;
+  return renumbered_by_triangles(edges);
 }
 
 }  // namespace vlit

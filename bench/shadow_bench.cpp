@@ -140,7 +140,7 @@ void bowling(const std::string& scene_path, const std::string& lights_path, bool
     for (std::size_t p = 0; p < on.size(); ++p)
       for (std::size_t v = 0; v < on[p].diffuse.size(); ++v) {
         total += 1;
-        dark += on[p].diffuse[v].x < off[p].diffuse[v].x * (1 - 1e-9);
+        dark += on[p].diffuse[v].x < off[p].diffuse[v].x * (1 - 1e-6);  // off ran the float batch kernels
         for (int c = 0; c < 3; ++c) {
           largest = std::max(largest, std::abs(double(cuts[p].diffuse[v][c])));
           difference = std::max(difference, std::abs(double(on[p].diffuse[v][c]) - cuts[p].diffuse[v][c]));
@@ -152,7 +152,7 @@ void bowling(const std::string& scene_path, const std::string& lights_path, bool
                 wall_on / wall_off, t_on / t_off);
     std::printf("| on, triangle cuts | %.3f | %.3f | %.2f | %.1f | %.1f |\n\n", wall_cuts, t_cuts, 1e6 * t_cuts / total,
                 wall_cuts / wall_off, t_cuts / t_off);
-    std::printf("%.0f of %.0f vertices (%.1f%%) lose light to a shadow. Largest difference between silhouettes and "
+    std::printf("%.0f of %.0f vertices (%.1f%%) lose more than 1e-6 of their light to a shadow. Largest difference between silhouettes and "
                 "triangle cuts: %.2e of the largest value.\n\n", dark, total, 100 * dark / total, difference / largest);
   }
 

@@ -147,7 +147,9 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     s << "plan: shadows off\n";
   } else {
     s << "plan: shadows on for " << plan.shadowed_pairs << " of " << plan.pairs_kept << " lit pairs";
-    if (plan.needs_occluders) s << "; BVH over " << plan.occluder_triangles << " triangles";
+    if (plan.needs_occluders)
+      s << "; BVH over " << plan.occluder_triangles << " triangles; area lights: visible part from "
+        << (plan.shade.area_shadows == AreaShadowMethod::kSilhouette ? "silhouette edges" : "triangle cuts");
     else s << "; no BVH (nothing can occlude)";
     s << "\n";
   }

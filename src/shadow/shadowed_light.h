@@ -11,7 +11,9 @@
 //   pieces with that weight; the peak specular is the largest peak over the pieces (a maximum,
 //   not an integral); the neighbourhood specular keeps the whole light's K samples and counts
 //   only the visible ones (so it never exceeds the unshadowed value);
-// - area: the visible pieces of the light (area_visibility.h); diffuse and exact specular are
+// - area: the visible pieces of the light, from the occluders' silhouette edges
+//   (area_silhouette.h; ShadeOptions::area_shadows) or, where that method's checks fail or when
+//   asked, by cutting the light with every occluder (area_visibility.h); diffuse and exact specular are
 //   sums over the pieces (both are integrals over the light: contour sums are additive over a
 //   partition), the peak is the largest peak over the pieces, the neighbourhood keeps the whole
 //   light's peak direction and ring and counts only the directions that reach a visible piece;

@@ -186,6 +186,27 @@ int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaS
   return count;
 }
 
+// The segment has a part strictly inside the convex polygon `uv` (turning `turn`), deeper than
+// `tolerance` from every edge (Cyrus-Beck clipping against the edges' half-planes).
+bool enters_convex(const SilhouetteSegment& g, const std::vector<std::pair<double, double>>& uv, int turn,
+                   double tolerance) {
+  double t0 = 0, t1 = 1;
+  const int n = static_cast<int>(uv.size());
+  for (int i = 0; i < n; ++i) {
+    const auto& [ax, ay] = uv[i];
+    const auto& [bx, by] = uv[(i + 1) % n];
+    const double ex = bx - ax, ey = by - ay;
+    const double margin = tolerance * std::sqrt(ex * ex + ey * ey);
+    const double f0 = turn * difference_of_products(ex, g.v0 - ay, ey, g.u0 - ax) - margin;
+    const double f1 = turn * difference_of_products(ex, g.v1 - ay, ey, g.u1 - ax) - margin;
+    if (f0 <= 0 && f1 <= 0) return false;
+    if (f0 < 0) t0 = std::max(t0, f0 / (f0 - f1));
+    if (f1 < 0) t1 = std::min(t1, f0 / (f0 - f1));
+    if (!(t1 > t0)) return false;
+  }
+  return true;
+}
+
 double u_at(const SilhouetteSegment& s, double v) {  // s stored with v0 <= v1
   if (v <= s.v0) return s.u0;
   if (v >= s.v1) return s.u1;
@@ -243,20 +264,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   s.silhouette_segments += static_cast<long>(s.segments.size());
   LightPieces& pieces = s.pieces;
   pieces.clear();
-  if (s.segments.empty()) {
-    // No silhouette crosses R: the light is wholly visible or wholly hidden; one shadow ray to any
-    // point of R tells (a few points are tried in case a ray grazes an edge).
-    static constexpr double kFractions[kMaxReferenceRays][2] = {
-        {0.5, 0.5}, {0.31, 0.67}, {0.73, 0.29}, {0.19, 0.23}, {0.83, 0.79}, {0.41, 0.13}, {0.61, 0.91}, {0.11, 0.57}};
-    for (const auto& [a, b] : kFractions) {
-      const double u = tight.x0 + a * (tight.x1 - tight.x0), v = tight.y0 + b * (tight.y1 - tight.y0);
-      const int d = depth_at(f, f.center + f.u * u + f.v * v, occluders, s);
-      if (d >= 0) return d == 0 ? SilhouetteVisibility::kUnoccluded : SilhouetteVisibility::kPieces;
-    }
-    return ++s.undecided, SilhouetteVisibility::kUndecided;
-  }
-
-  // L's edges, weight -1 for each turn of L around a point (so t = d + 1 - [x in L]).
+  // L in (u, v) and its orientation.
   double twice_area = 0;
   const int n_light = horizon_clipped.count;
   std::vector<std::pair<double, double>>& light_uv = s.light_uv;
@@ -269,6 +277,44 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     twice_area += ax * by - bx * ay;
   }
   const int light_turn = twice_area > 0 ? 1 : -1;
+
+  // When no silhouette segment enters L (L convex), the depth is the same all over L: one shadow
+  // ray to a point inside L decides (a few points are tried in case a ray grazes an edge).
+  bool convex = true;
+  for (int i = 0; i < n_light && convex; ++i) {
+    const auto& [ax, ay] = light_uv[i];
+    const auto& [bx, by] = light_uv[(i + 1) % n_light];
+    const auto& [cx, cy] = light_uv[(i + 2) % n_light];
+    convex = light_turn * orient2(ax, ay, bx, by, cx, cy) >= 0;
+  }
+  bool uniform = s.segments.empty();
+  if (!uniform && convex) {
+    const double tolerance = 1e-12 * (f.rect.x1 - f.rect.x0 + f.rect.y1 - f.rect.y0);
+    uniform = true;
+    for (const SilhouetteSegment& g : s.segments)
+      if (enters_convex(g, light_uv, light_turn, tolerance)) {
+        uniform = false;
+        break;
+      }
+  }
+  if (uniform) {
+    double cu = 0, cv = 0;
+    for (const auto& [u, v] : light_uv) cu += u, cv += v;
+    cu /= n_light;
+    cv /= n_light;
+    static constexpr double kToward[kMaxReferenceRays] = {0, 0.31, 0.53, 0.17, 0.71, 0.43, 0.29, 0.61};
+    for (int k = 0; k < kMaxReferenceRays; ++k) {
+      // From L's vertex mean toward one of its vertices (inside L when L is convex; any point of
+      // R serves when no segment is left at all).
+      const auto& [vu, vv] = light_uv[k % n_light];
+      const double u = cu + kToward[k] * (vu - cu), v = cv + kToward[k] * (vv - cv);
+      const int d = depth_at(f, f.center + f.u * u + f.v * v, occluders, s);
+      if (d >= 0) return d == 0 ? SilhouetteVisibility::kUnoccluded : SilhouetteVisibility::kPieces;
+    }
+    return ++s.undecided, SilhouetteVisibility::kUndecided;
+  }
+
+  // L's edges, weight -1 for each turn of L around a point (so t = d + 1 - [x in L]).
   for (int i = 0; i < n_light; ++i) {
     const auto& [ax, ay] = light_uv[i];
     const auto& [bx, by] = light_uv[(i + 1) % n_light];

@@ -56,18 +56,9 @@ Aabb padded(Aabb b) {
   return b;
 }
 
-// The box lies wholly outside the half-space (its corner farthest along the normal is behind the
-// plane by more than the rounding of the per-triangle test could explain).
-bool box_outside(const Aabb& box, const HalfSpace& h) {
-  const Vec3d far{h.normal.x >= 0 ? box.hi.x : box.lo.x, h.normal.y >= 0 ? box.hi.y : box.lo.y,
-                  h.normal.z >= 0 ? box.hi.z : box.lo.z};
-  const Vec3d w = far - h.origin;
-  const double s = dot(h.normal, w);
-  return s < -1e-9 * length(h.normal) * (length(w) + length(box.hi - box.lo));
-}
-
-// The same test for a half-space with a unit normal, with max-norms in the margin (no roots):
-// max-norms are within sqrt(3) of the Euclidean ones, and the margin is widened by 2 for it.
+// The box lies wholly outside the half-space (unit normal): its corner farthest along the normal
+// is behind the plane by more than the rounding of the per-triangle tests could explain. The
+// margin uses max-norms (within sqrt(3) of the Euclidean ones; it is widened by 2 for that).
 bool box_outside_unit(const Aabb& box, const HalfSpace& h) {
   const Vec3d far{h.normal.x >= 0 ? box.hi.x : box.lo.x, h.normal.y >= 0 ? box.hi.y : box.lo.y,
                   h.normal.z >= 0 ? box.hi.z : box.lo.z};
@@ -301,26 +292,9 @@ void OccluderBvh::triangles_in_volume(const ConvexVolume& volume, const Vec3d& s
       if (test(i)) out.push_back(i);
     return;
   }
-  const Aabb query = padded(volume.box);
-  std::uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const std::uint32_t self = stack[--top];
-    const Node& node = nodes_[self];
-    if (!node.box.overlaps(query)) continue;
-    bool outside = false;
-    for (const HalfSpace& h : volume.planes)
-      if ((outside = box_outside(node.box, h))) break;
-    if (outside) continue;
-    if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-        if (test(order_[i])) out.push_back(order_[i]);
-    } else {
-      stack[top++] = node.first;
-      stack[top++] = self + 1;
-    }
-  }
+  visit_volume(volume, [](std::uint32_t) { return false; }, [&](std::uint32_t tri) {
+    if (test(tri)) out.push_back(tri);
+  });
   std::sort(out.begin(), out.end());
 }
 
@@ -338,15 +312,22 @@ void OccluderBvh::silhouette_candidates(const ConvexVolume& volume, const HalfSp
       if (near(i)) out.push_back(i);
     return;
   }
-  silhouette_subtrees(volume, inside, inside_count, p, near, out);
+  // A subtree that faces p uniformly and that no plane of `inside` cuts carries no silhouette.
+  auto uniform = [&](std::uint32_t node) {
+    for (int k = 0; k < inside_count; ++k)
+      if (!box_inside(nodes_[node].box, inside[k])) return false;
+    return faces_uniformly(node, p);
+  };
+  visit_volume(volume, uniform, [&](std::uint32_t tri) {
+    if (near(tri)) out.push_back(tri);
+  });
   std::sort(out.begin(), out.end());
 }
 
-template <class Near>
-void OccluderBvh::silhouette_subtrees(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
-                                      const Vec3d& p, const Near& near, std::vector<std::uint32_t>& out) const {
+template <class Prune, class Leaf>
+void OccluderBvh::visit_volume(const ConvexVolume& volume, const Prune& prune, const Leaf& leaf) const {
   const Aabb query = padded(volume.box);
-  HalfSpace planes[16];
+  HalfSpace planes[16];  // unit normals; a volume with more planes is culled by its first 16
   const int plane_count = std::min<int>(16, static_cast<int>(volume.planes.size()));
   for (int k = 0; k < plane_count; ++k) {
     const double len = length(volume.planes[k].normal);
@@ -361,13 +342,9 @@ void OccluderBvh::silhouette_subtrees(const ConvexVolume& volume, const HalfSpac
     if (!node.box.overlaps(query)) continue;
     bool outside = false;
     for (int k = 0; k < plane_count && !outside; ++k) outside = box_outside_unit(node.box, planes[k]);
-    if (outside) continue;
-    bool uncut = true;
-    for (int k = 0; k < inside_count && uncut; ++k) uncut = box_inside(node.box, inside[k]);
-    if (uncut && faces_uniformly(self, p)) continue;
+    if (outside || prune(self)) continue;
     if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-        if (near(order_[i])) out.push_back(order_[i]);
+      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) leaf(order_[i]);
     } else {
       stack[top++] = node.first;
       stack[top++] = self + 1;

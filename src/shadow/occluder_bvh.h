@@ -79,9 +79,10 @@ class OccluderBvh {
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
   void build_cones();
   bool faces_uniformly(std::uint32_t node, const Vec3d& p) const;
-  template <class Near>
-  void silhouette_subtrees(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
-                           const Near& near, std::vector<std::uint32_t>& out) const;
+  // Calls leaf(triangle) for the triangles of every leaf whose box meets the volume, skipping
+  // the subtrees for which prune(node) is true.
+  template <class Prune, class Leaf>
+  void visit_volume(const ConvexVolume& volume, const Prune& prune, const Leaf& leaf) const;
 
   OccluderTriangles triangles_;
   OccluderEdges edges_;

@@ -1,5 +1,6 @@
 #include "io/atomic_write.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -14,6 +15,40 @@
 #include "core/input_error.h"
 
 namespace vlit {
+namespace {
+
+// The temporary being written, for remove_temporary_in_progress. `g_claimed` makes one write the
+// owner of the buffer; `g_pending` says the buffer holds a complete path.
+char g_pending_path[4096];
+std::atomic<bool> g_claimed{false};
+std::atomic<bool> g_pending{false};
+
+// Tracks a temporary while it exists; a no-op if another write already holds the buffer.
+class PendingTemporary {
+ public:
+  explicit PendingTemporary(const std::string& path) {
+    if (path.size() >= sizeof g_pending_path || g_claimed.exchange(true)) return;
+    owner_ = true;
+    std::memcpy(g_pending_path, path.c_str(), path.size() + 1);
+    g_pending.store(true);
+  }
+  ~PendingTemporary() {
+    if (!owner_) return;
+    g_pending.store(false);
+    g_claimed.store(false);
+  }
+  PendingTemporary(const PendingTemporary&) = delete;
+  PendingTemporary& operator=(const PendingTemporary&) = delete;
+
+ private:
+  bool owner_ = false;
+};
+
+}  // namespace
+
+void remove_temporary_in_progress() noexcept {
+  if (g_pending.load()) ::unlink(g_pending_path);
+}
 
 void write_file_atomically(const std::string& path, std::string_view bytes) {
   namespace fs = std::filesystem;
@@ -31,6 +66,7 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   const int fd = mkstemp(name.data());
   if (fd < 0) throw InputError(path, std::string("cannot create a temporary file: ") + std::strerror(errno));
   const std::string tmp_path(name.data());
+  const PendingTemporary pending(tmp_path);
   auto fail = [&](const std::string& what) {
     const int saved = errno;
     ::close(fd);

@@ -11,4 +11,9 @@ namespace vlit {
 // Throws InputError(path, ...) if the file cannot be written.
 void write_file_atomically(const std::string& path, std::string_view bytes);
 
+// Removes the temporary file of a write in progress, if there is one. Async-signal-safe: for a
+// signal handler that ends the process at once (a second Ctrl-C), so that not even a temporary
+// is left. (One write at a time is tracked; the others still clean up when they fail.)
+void remove_temporary_in_progress() noexcept;
+
 }  // namespace vlit

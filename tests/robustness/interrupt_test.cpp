@@ -106,3 +106,81 @@ TEST_CASE("SIGINT during a batch bake: finished files complete, no partial file,
   MESSAGE(complete << " of " << kFiles << " files complete when SIGINT arrived");
   fs::remove_all(dir);
 }
+
+namespace {
+
+// Starts `vlit ARGS...` with stderr into err_path; returns its pid.
+pid_t spawn_vlit(const std::vector<std::string>& args, const std::string& err_path) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int fd = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(fd, 2);
+    std::vector<char*> argv;
+    const std::string vlit = VLIT_BINARY;
+    argv.push_back(const_cast<char*>(vlit.c_str()));
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(vlit.c_str(), argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The demo scene with shadows on: every pair shadowed, tens of seconds of lighting (docs/shadows.md).
+std::vector<std::string> shadowed_demo_bake(const fs::path& out) {
+  const std::string source = VLIT_SOURCE_DIR;
+  return {"bake", source + "/assets/demo/studio.glb", "--lights", source + "/assets/demo/lights.json", "--shadows", "on",
+          "-o", out.string(), "-q"};
+}
+
+}  // namespace
+
+TEST_CASE("Ctrl-C during a bake with shadows on: stopped within 2 s, exit 130, no output") {
+  const fs::path dir = vlit::test::temp_dir("robust-sigint-shadows");
+  const fs::path out = dir / "out.glb", err = dir / "stderr.txt";
+  const pid_t pid = spawn_vlit(shadowed_demo_bake(out), err.string());
+  REQUIRE(pid > 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // well into the shadowed lighting
+  int status = 0;
+  REQUIRE_MESSAGE(::waitpid(pid, &status, WNOHANG) == 0, "the bake ended before the signal: the test proved nothing");
+  const auto sent = std::chrono::steady_clock::now();
+  ::kill(pid, SIGINT);
+  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+  const std::string text = read_text(err);
+  CAPTURE(text);
+  MESSAGE("stopped " << seconds << " s after SIGINT");
+  CHECK(seconds < 2.0);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 130);
+  CHECK(text.find("interrupted; no output written") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".vlit-tmp") == std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a second signal ends a bake at once, with a message, exit 130, no output") {
+  const fs::path dir = vlit::test::temp_dir("robust-sigint-twice");
+  const fs::path out = dir / "out.glb", err = dir / "stderr.txt";
+  const pid_t pid = spawn_vlit(shadowed_demo_bake(out), err.string());
+  REQUIRE(pid > 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(700));
+  int status = 0;
+  REQUIRE(::waitpid(pid, &status, WNOHANG) == 0);
+  // Two different signals, so that the kernel cannot merge them into one.
+  ::kill(pid, SIGINT);
+  ::kill(pid, SIGTERM);
+  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  const std::string text = read_text(err);
+  CAPTURE(text);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 130);
+  CHECK(text.find("interrupted again; stopped at once") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}

@@ -133,7 +133,7 @@ int run_single(const BakeArgs& args, const BatchInput& input, BakeFileOptions op
     log("skipped", "");
     return 0;
   }
-  Progress progress("lighting " + in, !args.quiet);
+  Progress progress("lighting", in, !args.quiet);
   options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
   const auto start = std::chrono::steady_clock::now();
   try {

@@ -118,7 +118,10 @@ TEST_CASE("--shard I/N: N shards bake every input exactly once, whatever the ord
     std::rotate(args.begin(), args.begin() + 7 * s, args.end());
     if (s == 1) std::reverse(args.begin(), args.end());
     std::string inputs;
-    for (const auto& a : args) inputs += " " + q(a);
+    for (const auto& a : args) {
+      inputs += " ";
+      inputs += q(a);
+    }
     const auto r = run_command(kVlit + " bake" + inputs + " --lights " + q(b.lights) + " -o " + q(out) + " --shard " +
                                std::to_string(s) + "/" + std::to_string(kShards) + " --manifest " + q(manifest));
     REQUIRE_MESSAGE(r.exit_code == 0, r.err);
@@ -137,7 +140,10 @@ TEST_CASE("--shard I/N: N shards bake every input exactly once, whatever the ord
   CHECK(baked.size() == files.size());
   CHECK(std::all_of(baked.begin(), baked.end(), [](const auto& k) { return k.second == 1; }));
   std::string all_manifests;
-  for (const auto& m : manifests) all_manifests += " " + q(m);
+  for (const auto& m : manifests) {
+    all_manifests += " ";
+    all_manifests += q(m);
+  }
   const auto summary = run_command(kVlit + " manifest-summary" + all_manifests);
   CAPTURE(summary.out);
   CHECK(summary.exit_code == 0);
@@ -225,4 +231,37 @@ TEST_CASE("--manifest records failures with their error; manifest-summary exits 
   CHECK(s.out.find("failed: " + (b.in / "broken.gltf").string()) != std::string::npos);
   const auto missing = run_command(kVlit + " manifest-summary " + q(b.dir / "none.jsonl"));
   CHECK(missing.exit_code != 0);
+}
+
+TEST_CASE("the batch progress line fits a narrow terminal: the path is shortened, not wrapped") {
+  if (run_command("command -v script").exit_code != 0) {
+    MESSAGE("skipped: `script` (util-linux) is not installed");
+    return;
+  }
+  const SmallBatch b = make_batch("cli-narrow", 2);
+  const fs::path deep = b.in / "a-rather-long-folder-name/and-another-long-one/model-with-a-long-name.glb";
+  fs::create_directories(deep.parent_path());
+  fs::copy_file(b.in / b.keys[0], deep);
+  // `script` gives vlit a pseudo-terminal of no size; vlit then reads COLUMNS.
+  std::string command = "COLUMNS=50 script -qec ";  // appended: GCC 12 warns falsely (-Wrestrict) on "..." + std::string&&
+  command += q(kVlit + " bake " + q(b.in) + " --lights " + q(b.lights) + " -o " + q(b.dir / "out"));
+  command += " /dev/null";
+  const auto r = run_command(command);
+  REQUIRE_MESSAGE(r.exit_code == 0, r.out);
+  std::size_t lines = 0;
+  std::string segment;
+  for (const char c : r.out + "\n") {
+    if (c != '\r' && c != '\n') {
+      segment += c;
+      continue;
+    }
+    if (segment.find("baking ") == 0) {
+      ++lines;
+      CAPTURE(segment);
+      CHECK(segment.size() <= 49);
+    }
+    segment.clear();
+  }
+  CHECK(lines >= 3);  // one line per file at least
+  CHECK(r.out.find("...") != std::string::npos);  // the long path was shortened
 }

@@ -49,6 +49,7 @@ struct BakeArgs {
   std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
   std::string shard;               // "I/N", "auto" or empty
   bool skip_existing = false;
+  bool keep_image_links = false;
   std::string manifest;            // JSON lines, appended; empty: none
 };
 
@@ -79,6 +80,7 @@ BakeFileOptions file_options(const BakeArgs& args) {
   o.lights_path = args.lights;
   o.use_file_lights = !args.no_file_lights;
   o.shadows = args.shadows == "on";
+  o.embed_images = !args.keep_image_links;
   o.encode.exposure = args.exposure;
   o.encode.mark_unlit = !args.no_unlit;
   o.encode.target = args.target;
@@ -275,6 +277,9 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_option("--shadows", args->shadows,
                   "on: lights are hidden by the scene's triangles (soft shadows, docs/shadows.md); off (default)")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_flag("--keep-image-links", args->keep_image_links,
+                "In a .glb output, keep the input's image files as links (rewritten relative to the output) "
+                "instead of embedding them; a .gltf output always keeps links");
   cmd->add_flag("--explain", args->explain,
                 "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");

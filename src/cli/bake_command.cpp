@@ -11,8 +11,10 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "bake/bake_file.h"
+#include "batch/abandoned_temporaries.h"
 #include "batch/batch_inputs.h"
 #include "batch/manifest.h"
 #include "batch/output_freshness.h"
@@ -179,6 +181,13 @@ int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeF
   if (!args.manifest.empty()) manifest = std::make_unique<ManifestWriter>(args.manifest);
   if (shard && !args.quiet)
     std::fprintf(stderr, "shard %s: %zu of %zu inputs\n", shard->text().c_str(), items.size(), batch_size);
+  if (args.skip_existing) {
+    std::set<std::string> outputs;
+    for (const BatchItem& item : items) outputs.insert(item.output.lexically_normal().string());
+    const std::size_t removed = remove_abandoned_temporaries(args.output, outputs);
+    if (removed > 0 && !args.quiet)
+      std::fprintf(stderr, "removed %zu temporary file(s) left by a killed run\n", removed);
+  }
 
   std::size_t baked = 0, skipped = 0, failed = 0, done = 0;
   BatchProgress progress(items.size(), !args.quiet);

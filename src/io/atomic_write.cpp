@@ -17,6 +17,9 @@
 namespace vlit {
 namespace {
 
+constexpr std::string_view kTemporaryInfix = ".vlit-tmp-";
+constexpr std::size_t kTemporaryRandomChars = 6;  // mkstemp's XXXXXX
+
 // The temporary being written, for remove_temporary_in_progress. `g_claimed` makes one write the
 // owner of the buffer; `g_pending` says the buffer holds a complete path.
 char g_pending_path[4096];
@@ -46,6 +49,16 @@ class PendingTemporary {
 
 }  // namespace
 
+std::string output_of_temporary(const std::string& path) {
+  const std::filesystem::path p(path);
+  const std::string name = p.filename().string();
+  const std::size_t infix = name.rfind(kTemporaryInfix);
+  if (name.size() < 2 || name[0] != '.' || infix == std::string::npos || infix < 2 ||
+      name.size() != infix + kTemporaryInfix.size() + kTemporaryRandomChars)
+    return {};
+  return (p.parent_path() / name.substr(1, infix - 1)).string();
+}
+
 void remove_temporary_in_progress() noexcept {
   if (g_pending.load()) ::unlink(g_pending_path);
 }
@@ -59,7 +72,8 @@ void write_file_atomically(const std::string& path, std::string_view bytes) {
   // Appended piece by piece: GCC 12 gives a false -Wrestrict warning for "." + std::string&&.
   std::string hidden = ".";
   hidden += target.filename().string();
-  hidden += ".vlit-tmp-XXXXXX";
+  hidden += kTemporaryInfix;
+  hidden += "XXXXXX";
   const std::string tmpl = (dir / hidden).string();
   std::vector<char> name(tmpl.begin(), tmpl.end());
   name.push_back('\0');

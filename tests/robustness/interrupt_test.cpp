@@ -6,12 +6,16 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <thread>
 
 #include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "batch/manifest.h"
+#include "batch/shard.h"
 #include "gltf/gltf_file.h"
 #include "support/gltf_builder.h"
 
@@ -182,5 +186,90 @@ TEST_CASE("a second signal ends a bake at once, with a message, exit 130, no out
   CHECK(WEXITSTATUS(status) == 130);
   CHECK(text.find("interrupted again; stopped at once") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+TEST_CASE("a shard killed with SIGKILL resumes with --skip-existing: only what is missing is baked") {
+  const fs::path dir = vlit::test::temp_dir("robust-resume");
+  const fs::path in = dir / "in", out = dir / "out";
+  fs::create_directories(in);
+  vlit::test::GltfBuilder b;
+  add_grid(b, 300);  // 90 601 vertices per file
+  const vlit::Shard shard{1, 2};
+  std::set<std::string> mine, others;  // keys of shard 1/2 and of shard 0/2
+  for (int i = 0; i < 12; ++i) {
+    const std::string key = "grid" + std::to_string(100 + i) + ".glb";
+    b.write((in / key).string());
+    (vlit::shard_of_key(key, shard.count) == shard.index ? mine : others).insert(key);
+  }
+  REQUIRE(mine.size() >= 3);
+  REQUIRE(!others.empty());
+  {
+    std::ofstream lights(dir / "lights.json");
+    lights << R"({"lights": [)";
+    for (int i = 0; i < 24; ++i)
+      lights << (i ? "," : "") << R"({"type": "linear", "from": [)" << i * 0.05 << R"(, 0, 1], "to": [)" << i * 0.05
+             << R"(, 1, 1.5], "intensity": 1})";
+    lights << "]}";
+  }
+  const std::string first_manifest = (dir / "run1.jsonl").string(), second_manifest = (dir / "run2.jsonl").string();
+  auto args = [&](const std::string& manifest) {
+    return std::vector<std::string>{"bake", in.string(), "-o", out.string(), "--lights", (dir / "lights.json").string(),
+                                    "--shard", shard.text(), "--skip-existing", "--manifest", manifest};
+  };
+  const pid_t pid = spawn_vlit(args(first_manifest), (dir / "run1.txt").string());
+  REQUIRE(pid > 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
+  auto outputs = [&] {
+    std::set<std::string> names;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out, ec))
+      if (e.path().extension() == ".glb") names.insert(e.path().filename().string());
+    return names;
+  };
+  while (outputs().empty() && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGKILL);  // no handler runs: as a preemption without grace
+  int status = 0;
+  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  const std::set<std::string> before = outputs();
+  REQUIRE_MESSAGE(!before.empty(), "no output appeared within the deadline");
+  REQUIRE_MESSAGE(before.size() < mine.size(), "the shard finished before SIGKILL: the test proved nothing");
+  // A temporary abandoned by the kill, for an output of this shard, and one of the other shard's.
+  const std::string missing = *std::find_if(mine.begin(), mine.end(), [&](const auto& k) { return !before.count(k); });
+  std::ofstream(out / ("." + missing + ".vlit-tmp-Ab12Cd")) << "half a file";
+  std::ofstream(out / ("." + *others.begin() + ".vlit-tmp-Ef34Gh")) << "another shard's";
+
+  const pid_t again = spawn_vlit(args(second_manifest), (dir / "run2.txt").string());
+  REQUIRE(::waitpid(again, &status, 0) == again);
+  const std::string text = read_text(dir / "run2.txt");
+  CAPTURE(text);
+  REQUIRE(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  // At least the planted one (the kill may have left a real one too).
+  CHECK(text.find(" temporary file(s) left by a killed run") != std::string::npos);
+  CHECK(outputs() == mine);  // the whole shard, nothing of the other
+  CHECK_FALSE(fs::exists(out / ("." + missing + ".vlit-tmp-Ab12Cd")));
+  CHECK(fs::exists(out / ("." + *others.begin() + ".vlit-tmp-Ef34Gh")));  // not this shard's to remove
+  // The resumed run kept what the killed one finished and baked only the rest.
+  std::map<std::string, std::string> status_of;
+  for (const auto& r : vlit::read_manifest(second_manifest)) status_of[r.key] = r.status;
+  CHECK(status_of.size() == mine.size());
+  for (const auto& key : mine) {
+    CAPTURE(key);
+    CHECK(status_of[key] == (before.count(key) ? "skipped" : "baked"));
+  }
+  // No input baked twice over the two runs (the killed run may have renamed its last output
+  // into place without living to write its manifest line: that one is "skipped" only).
+  std::map<std::string, int> baked;
+  for (const auto& m : {first_manifest, second_manifest})
+    for (const auto& r : vlit::read_manifest(m))
+      if (r.status == "baked") ++baked[r.key];
+  CHECK(baked.size() >= mine.size() - 1);
+  for (const auto& [key, n] : baked) {
+    CAPTURE(key);
+    CHECK(n == 1);
+  }
+  for (const auto& key : mine) vlit::load_gltf_file((out / key).string());  // complete files
   fs::remove_all(dir);
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <random>
 #include <set>
 #include <thread>
 
@@ -130,16 +131,52 @@ pid_t spawn_vlit(const std::vector<std::string>& args, const std::string& err_pa
   return pid;
 }
 
+// Waits for `pid` at most `seconds`; kills it (SIGKILL) if it is still running then. Returns
+// whether it ended by itself, with its wait status in `status`.
+bool wait_at_most(pid_t pid, double seconds, int& status) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  ::kill(pid, SIGKILL);
+  ::waitpid(pid, &status, 0);
+  return false;
+}
+
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// The demo scene with shadows on: every pair shadowed, tens of seconds of lighting (docs/shadows.md).
-std::vector<std::string> shadowed_demo_bake(const fs::path& out) {
-  const std::string source = VLIT_SOURCE_DIR;
-  return {"bake", source + "/assets/demo/studio.glb", "--lights", source + "/assets/demo/lights.json", "--shadows", "on",
-          "-o", out.string(), "-q"};
+// A bake with shadows on that takes tens of seconds even with the fastest visibility we have had
+// (silhouettes: > 20 s): a 200 x 200 grid under a soup of 4000 small random triangles, lit by
+// 8 area lights. Returns the arguments of `vlit bake` writing `out`.
+std::vector<std::string> slow_shadowed_bake(const fs::path& dir, const fs::path& out) {
+  vlit::test::GltfBuilder b;
+  add_grid(b, 200);
+  std::vector<float> soup;
+  std::vector<std::uint32_t> indices;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(0, 1);
+  for (std::uint32_t t = 0; t < 4000; ++t) {
+    const float cx = unit(rng), cy = unit(rng), cz = 0.3f + 0.4f * unit(rng);
+    for (int v = 0; v < 3; ++v)
+      soup.insert(soup.end(), {cx + 0.03f * (unit(rng) - 0.5f), cy + 0.03f * (unit(rng) - 0.5f), cz + 0.01f * (unit(rng) - 0.5f)});
+    indices.insert(indices.end(), {3 * t, 3 * t + 1, 3 * t + 2});
+  }
+  b.add_node(b.add_mesh(soup, {}, indices));
+  const fs::path scene = dir / "soup.glb", lights = dir / "panels.json";
+  b.write(scene.string());
+  std::ofstream json(lights);
+  json << R"({"lights": [)";
+  for (int j = 0; j < 8; ++j) {
+    const double x = (j % 4) / 4.0, y = (j / 4) / 4.0;
+    json << (j ? "," : "") << R"({"type": "area", "intensity": 1, "polygon": [)" << "[" << x << "," << y + 0.2 << ",1],["
+         << x + 0.2 << "," << y + 0.2 << ",1],[" << x + 0.2 << "," << y << ",1],[" << x << "," << y << ",1]]}";
+  }
+  json << "]}";
+  return {"bake", scene.string(), "--lights", lights.string(), "--shadows", "on", "-o", out.string(), "-q"};
 }
 
 }  // namespace
@@ -147,14 +184,14 @@ std::vector<std::string> shadowed_demo_bake(const fs::path& out) {
 TEST_CASE("Ctrl-C during a bake with shadows on: stopped within 2 s, exit 130, no output") {
   const fs::path dir = vlit::test::temp_dir("robust-sigint-shadows");
   const fs::path out = dir / "out.glb", err = dir / "stderr.txt";
-  const pid_t pid = spawn_vlit(shadowed_demo_bake(out), err.string());
+  const pid_t pid = spawn_vlit(slow_shadowed_bake(dir, out), err.string());
   REQUIRE(pid > 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // well into the shadowed lighting
   int status = 0;
   REQUIRE_MESSAGE(::waitpid(pid, &status, WNOHANG) == 0, "the bake ended before the signal: the test proved nothing");
   const auto sent = std::chrono::steady_clock::now();
   ::kill(pid, SIGINT);
-  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  REQUIRE_MESSAGE(wait_at_most(pid, 10, status), "still running 10 s after SIGINT (killed)");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
   const std::string text = read_text(err);
   CAPTURE(text);
@@ -165,13 +202,14 @@ TEST_CASE("Ctrl-C during a bake with shadows on: stopped within 2 s, exit 130, n
   CHECK(text.find("interrupted; no output written") != std::string::npos);
   CHECK_FALSE(fs::exists(out));
   for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().find(".vlit-tmp") == std::string::npos);
+  CHECK(std::distance(fs::directory_iterator(dir), {}) == 3);  // the scene, its lights, stderr
   fs::remove_all(dir);
 }
 
 TEST_CASE("a second signal ends a bake at once, with a message, exit 130, no output") {
   const fs::path dir = vlit::test::temp_dir("robust-sigint-twice");
   const fs::path out = dir / "out.glb", err = dir / "stderr.txt";
-  const pid_t pid = spawn_vlit(shadowed_demo_bake(out), err.string());
+  const pid_t pid = spawn_vlit(slow_shadowed_bake(dir, out), err.string());
   REQUIRE(pid > 0);
   std::this_thread::sleep_for(std::chrono::milliseconds(700));
   int status = 0;
@@ -179,7 +217,7 @@ TEST_CASE("a second signal ends a bake at once, with a message, exit 130, no out
   // Two different signals, so that the kernel cannot merge them into one.
   ::kill(pid, SIGINT);
   ::kill(pid, SIGTERM);
-  REQUIRE(::waitpid(pid, &status, 0) == pid);
+  REQUIRE_MESSAGE(wait_at_most(pid, 10, status), "still running 10 s after two signals (killed)");
   const std::string text = read_text(err);
   CAPTURE(text);
   REQUIRE(WIFEXITED(status));

@@ -175,16 +175,14 @@ int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeF
     std::erase_if(items, [&](const BatchItem& item) { return shard_of_key(item.key, shard->count) != shard->index; });
   }
   std::error_code ec;
-  if (!fs::exists(args.output, ec)) {
-    // `-o baked.glb` with several inputs or --shard is a mistake, not a folder to create.
-    if (is_gltf_path(args.output))
-      throw InputError(args.output, "a batch (several inputs, a directory, a pattern or --shard) needs -o to be a "
-                                    "directory, not a .glb or .gltf file name");
-    fs::create_directories(args.output, ec);
-  }
-  if (!fs::is_directory(args.output, ec)) throw InputError(args.output, "a batch needs -o to be a directory");
+  // `-o baked.glb` with several inputs or --shard is a mistake, not a folder to create.
+  if (!fs::exists(args.output, ec) && is_gltf_path(args.output))
+    throw InputError(args.output, "a batch (several inputs, a directory, a pattern or --shard) needs -o to be a "
+                                  "directory, not a .glb or .gltf file name");
   std::unique_ptr<ManifestWriter> manifest;
   if (!args.manifest.empty()) manifest = std::make_unique<ManifestWriter>(args.manifest);
+  if (!fs::exists(args.output, ec)) fs::create_directories(args.output, ec);
+  if (!fs::is_directory(args.output, ec)) throw InputError(args.output, "a batch needs -o to be a directory");
   if (shard && !args.quiet)
     std::fprintf(stderr, "shard %s: %zu of %zu inputs\n", shard->text().c_str(), items.size(), batch_size);
   if (args.skip_existing) {

@@ -71,7 +71,7 @@ std::string image_mime_type(const std::string& bytes) {
 
 // Copies the files of relative URI images into buffer 0 (the .glb's binary chunk) as new
 // bufferViews; an image file named twice is stored once. Call after merge_buffers.
-void embed_images(tinygltf::Model& model, const fs::path& in_dir, const std::string& output_path) {
+void embed_images(tinygltf::Model& model, const fs::path& in_dir) {
   std::map<std::string, std::pair<int, std::string>> view_of_file;  // file -> bufferView, mimeType
   for (std::size_t i = 0; i < model.images.size(); ++i) {
     tinygltf::Image& image = model.images[i];
@@ -82,9 +82,8 @@ void embed_images(tinygltf::Model& model, const fs::path& in_dir, const std::str
       std::string bytes;
       try {
         bytes = read_text_file(file);
-      } catch (const InputError& e) {
-        throw InputError(output_path, "cannot embed image " + std::to_string(i) + " (" + image.uri + "): " + e.problem() +
-                                          "; pass --keep-image-links to keep it as a link");
+      } catch (const InputError&) {
+        continue;  // missing or unreadable in the input too (the loader tolerates it): left as a link
       }
       const std::string mime = image_mime_type(bytes);
       if (mime.empty()) continue;  // not a glTF image type: left as a link
@@ -205,7 +204,7 @@ void write_gltf(tinygltf::Model model, const std::string& input_path, const std:
 
   std::error_code ec;
   const fs::path in_dir = fs::absolute(fs::path(input_path)).parent_path();
-  if (binary && options.embed_images) embed_images(model, in_dir, output_path);
+  if (binary && options.embed_images) embed_images(model, in_dir);
   // Keep the other relative image URIs pointing at the same files from the output's directory.
   const fs::path out_dir = fs::absolute(fs::path(output_path)).parent_path();
   if (fs::weakly_canonical(in_dir, ec) != fs::weakly_canonical(out_dir, ec)) {

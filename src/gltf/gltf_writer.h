@@ -6,8 +6,9 @@
 // the files of relative URI images in its binary chunk (a bufferView with the mimeType found from
 // the file's signature: PNG, JPEG, WebP, KTX2), as gltfpack and gltf-transform do, so that the
 // output can be moved on its own; with embed_images false, or for a .gltf, URI images keep their
-// URI, rewritten to stay valid relative to the output's directory. Data and absolute URIs, and
-// files of an unknown type, keep their URI.
+// URI, rewritten to stay valid relative to the output's directory. Data and absolute URIs, files
+// of an unknown type and files that cannot be read (the loader tolerates a missing image) keep
+// their URI.
 #pragma once
 
 #include <string>
@@ -21,8 +22,7 @@ struct GltfWriteOptions {
 };
 
 // `input_path` is the file the model was read from (for relative image URIs).
-// Throws InputError(output_path, ...) on failure, leaving no output file; an image to embed that
-// cannot be read is such a failure, naming the image.
+// Throws InputError(output_path, ...) on failure, leaving no output file.
 void write_gltf(tinygltf::Model model, const std::string& input_path, const std::string& output_path,
                 const GltfWriteOptions& options = {});
 

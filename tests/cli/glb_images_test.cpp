@@ -38,7 +38,7 @@ TEST_CASE(".glb output embeds the input's image files; --keep-image-links keeps 
   std::ofstream(dir / "in/tex/rough.jpg", std::ios::binary) << jpeg;
   vlit::test::GltfBuilder b;
   b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {}, {0, 1, 2}));
-  for (const char* uri : {"tex/base%20colour.png", "tex/rough.jpg", "tex/base%20colour.png"}) {
+  for (const char* uri : {"tex/base%20colour.png", "tex/rough.jpg", "tex/base%20colour.png", "tex/missing.png"}) {
     tinygltf::Image image;
     image.uri = uri;
     b.model().images.push_back(image);
@@ -53,19 +53,20 @@ TEST_CASE(".glb output embeds the input's image files; --keep-image-links keeps 
   fs::create_directories(dir / "moved");
   fs::rename(dir / "out/scene.glb", dir / "moved/scene.glb");
   const tinygltf::Model embedded = load_gltf_file((dir / "moved/scene.glb").string()).model;
-  REQUIRE(embedded.images.size() == 3);
+  REQUIRE(embedded.images.size() == 4);
   CHECK(embedded.images[0].uri.empty());
   CHECK(embedded.images[0].mimeType == "image/png");
   CHECK(embedded.images[1].mimeType == "image/jpeg");
   CHECK(buffer_view_bytes(embedded, embedded.images[0].bufferView) == png);
   CHECK(buffer_view_bytes(embedded, embedded.images[1].bufferView) == jpeg);
   CHECK(embedded.images[2].bufferView == embedded.images[0].bufferView);  // one file, stored once
+  CHECK(embedded.images[3].uri == "../in/tex/missing.png");  // missing in the input too: still a link
   for (const auto& view : embedded.bufferViews) CHECK(view.byteOffset % 4 == 0);
 
   const auto links = run_command(bake + " --keep-image-links -o " + q(dir / "out/links.glb"));
   REQUIRE_MESSAGE(links.exit_code == 0, links.err);
   const tinygltf::Model linked = load_gltf_file((dir / "out/links.glb").string()).model;
-  REQUIRE(linked.images.size() == 3);
+  REQUIRE(linked.images.size() == 4);
   CHECK(linked.images[0].bufferView == -1);
   CHECK(linked.images[0].uri == "../in/tex/base%20colour.png");
   CHECK(linked.images[1].uri == "../in/tex/rough.jpg");

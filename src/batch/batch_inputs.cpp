@@ -6,6 +6,7 @@
 
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
+#include "mesh/mesh_file.h"
 
 namespace vlit {
 namespace {
@@ -44,9 +45,9 @@ std::vector<BatchInput> expand_batch_argument(const std::string& arg) {
   std::error_code ec;
   if (fs::is_directory(arg, ec)) {
     for (auto it = fs::recursive_directory_iterator(arg, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file(ec) && is_gltf_path(it->path().string()))
+      if (it->is_regular_file(ec) && (is_gltf_path(it->path().string()) || is_mesh_path(it->path().string())))
         files.push_back({it->path().string(), fs::relative(it->path(), arg, ec).generic_string()});
-    if (files.empty()) throw InputError(arg, "directory holds no .gltf or .glb file");
+    if (files.empty()) throw InputError(arg, "directory holds no .gltf, .glb, .obj, .ply, .off or .stl file");
   } else if (!fs::exists(arg, ec) && has_wildcard(arg)) {
     const fs::path root = glob_root(arg);
     glob_t g{};

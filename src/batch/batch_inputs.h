@@ -1,5 +1,5 @@
 // The inputs of a batch bake and where each one's output goes. Every input argument is a root: a
-// file, a directory searched recursively, or a glob pattern whose root is the folder before its
+// file, a directory searched recursively for glTF and mesh files, or a glob pattern whose root is the folder before its
 // first wildcard. An input's key is its path relative to its root ('/'-separated); its output is
 // OUT_DIR/key, with .glb for a mesh file (OBJ, PLY, OFF, STL). So `Duck/glTF/Duck.gltf` and
 // `Duck/glTF-Quantized/Duck.gltf` under `Duck/` (or `'Duck/*/Duck.gltf'`) keep their folders.

@@ -266,7 +266,7 @@ Runner add_bake_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bake", "Light every vertex and store the light as glTF vertex colors (COLOR_0).");
   cmd->add_option("inputs", args->inputs,
                   "Input assets (.gltf or .glb; OBJ, PLY, OFF or STL meshes become a new glTF), directories "
-                  "(searched recursively for glTF) or quoted glob patterns; inputs are never modified")
+                  "(searched recursively for all of these) or quoted glob patterns; inputs are never modified")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output file (.glb or .gltf) for one input; for several inputs, a directory")

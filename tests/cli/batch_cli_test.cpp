@@ -269,3 +269,22 @@ TEST_CASE("the batch progress line fits a narrow terminal: the path is shortened
   CHECK(lines >= 3);  // one line per file at least
   CHECK(r.out.find("...") != std::string::npos);  // the long path was shortened
 }
+
+TEST_CASE("a folder of mesh files is a batch; x.obj next to x.glb is a collision") {
+  const SmallBatch b = make_batch("cli-mesh-folder", 1);
+  const fs::path meshes = b.dir / "meshes";
+  fs::create_directories(meshes / "sub");
+  std::ofstream(meshes / "tri.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  std::ofstream(meshes / "sub" / "quad.off") << "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
+  const auto out = b.dir / "out";
+  const auto r = run_command(kVlit + " bake " + q(meshes) + " --lights " + q(b.lights) + " -o " + q(out));
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  CHECK(files_under(out) == std::set<std::string>{"sub/quad.glb", "tri.glb"});
+  CHECK(load_gltf_file((out / "sub/quad.glb").string()).model.meshes.size() == 1);
+  fs::copy_file(b.in / b.keys[0], meshes / "tri.glb");
+  const auto clash = run_command(kVlit + " bake " + q(meshes) + " --lights " + q(b.lights) + " -o " + q(b.dir / "out2"));
+  CHECK(clash.exit_code == 1);
+  CHECK(clash.err.find((b.dir / "out2/tri.glb").string() + " <- " + (meshes / "tri.glb").string() + ", " +
+                       (meshes / "tri.obj").string()) != std::string::npos);
+  CHECK_FALSE(fs::exists(b.dir / "out2"));
+}

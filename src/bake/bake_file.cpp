@@ -67,7 +67,9 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
                               " the existing " + options.encode.target + " of " +
                               std::to_string(result.report.replaced_attributes) + " primitive(s)");
   t = Clock::now();
-  write_gltf(std::move(model), input, output);
+  GltfWriteOptions write;
+  write.embed_images = options.embed_images;
+  write_gltf(std::move(model), input, output, write);
   result.seconds.write = since(t);
   return result;
 }

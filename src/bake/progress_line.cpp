@@ -48,4 +48,25 @@ std::string batch_progress_line(std::size_t files_done, std::size_t files_total,
   return line;
 }
 
+std::string fit_width(const std::string& line, const std::string& name, std::size_t width) {
+  if (width == 0 || line.size() <= width) return line;
+  std::string fitted = line;
+  const std::size_t at = name.empty() ? std::string::npos : line.find(name);
+  const std::size_t excess = line.size() - width;
+  static const std::string kEllipsis = "...";
+  if (at != std::string::npos && name.size() > excess + kEllipsis.size() + 4)
+    return fitted.replace(at, name.size(), kEllipsis + name.substr(excess + kEllipsis.size()));
+  return fitted.substr(0, width);
+}
+
+std::string long_bake_warning(const std::string& name, double done, double total, double seconds) {
+  if (seconds < kLongBakeMinSeconds || done <= 0 || total <= done) return {};
+  const double left = (total - done) * seconds / done;
+  if (left <= kLongBakeSeconds) return {};
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.0f%% done after ", 100.0 * done / total);
+  return name + ": this bake will take about " + format_duration(left) + " more (" + buf + format_duration(seconds) +
+         "); Ctrl-C stops it without writing an output";
+}
+
 }  // namespace vlit

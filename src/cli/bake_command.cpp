@@ -1,17 +1,26 @@
 // vlit bake IN... --lights LIGHTS.json -o OUT
-// One input and a file name: bake one file. Several inputs, a directory or a glob pattern, or an
-// existing directory as OUT: a batch into the directory OUT, keeping going when a file fails.
+// One input and a file name: bake one file. Several inputs, a directory or a glob pattern, an
+// existing directory as OUT, or --shard: a batch into the directory OUT, keeping going when a file
+// fails. The batch's layout, sharding, resume and manifest are in src/batch/.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <atomic>
-#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
-#include <glob.h>
 #include <iostream>
+#include <memory>
+#include <optional>
+#include <set>
 
 #include "bake/bake_file.h"
+#include "batch/abandoned_temporaries.h"
+#include "batch/batch_inputs.h"
+#include "batch/manifest.h"
+#include "batch/output_freshness.h"
+#include "batch/shard.h"
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "cli/openmp_wait_policy.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
@@ -23,9 +32,6 @@ namespace vlit::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::atomic<bool> g_interrupted{false};
-extern "C" void on_interrupt(int) { g_interrupted.store(true); }
 
 struct BakeArgs {
   std::vector<std::string> inputs;
@@ -43,32 +49,11 @@ struct BakeArgs {
   std::string shadows = "off";
   std::size_t max_vertices = SceneLimits{}.max_vertices;
   std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
+  std::string shard;               // "I/N", "auto" or empty
+  bool skip_existing = false;
+  bool keep_image_links = false;
+  std::string manifest;            // JSON lines, appended; empty: none
 };
-
-// An input argument as a list of glTF files: a file as is, a directory searched recursively, a
-// pattern with * ? [ expanded (for shells that pass it through quoted). Each file is paired with
-// its path relative to the argument's root, which names its output in a batch.
-std::vector<std::pair<std::string, fs::path>> expand_input(const std::string& arg) {
-  std::vector<std::pair<std::string, fs::path>> files;
-  std::error_code ec;
-  if (fs::is_directory(arg, ec)) {
-    for (auto it = fs::recursive_directory_iterator(arg, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file(ec) && is_gltf_path(it->path().string()))
-        files.emplace_back(it->path().string(), fs::relative(it->path(), arg, ec));
-    std::sort(files.begin(), files.end());
-    if (files.empty()) throw InputError(arg, "directory holds no .gltf or .glb file");
-  } else if (!fs::exists(arg, ec) && arg.find_first_of("*?[") != std::string::npos) {
-    glob_t g{};
-    if (::glob(arg.c_str(), 0, nullptr, &g) == 0)
-      for (std::size_t i = 0; i < g.gl_pathc; ++i) files.emplace_back(g.gl_pathv[i], fs::path(g.gl_pathv[i]).filename());
-    ::globfree(&g);
-    if (files.empty()) throw InputError(arg, "pattern matches no file");
-  } else {
-    if (!fs::is_regular_file(arg, ec)) throw InputError(arg, "no such file");
-    files.emplace_back(arg, fs::path(arg).filename());
-  }
-  return files;
-}
 
 // "x,y,z": three finite numbers separated by commas.
 Vec3d parse_eye(const std::string& text) {
@@ -97,13 +82,14 @@ BakeFileOptions file_options(const BakeArgs& args) {
   o.lights_path = args.lights;
   o.use_file_lights = !args.no_file_lights;
   o.shadows = args.shadows == "on";
+  o.embed_images = !args.keep_image_links;
   o.encode.exposure = args.exposure;
   o.encode.mark_unlit = !args.no_unlit;
   o.encode.target = args.target;
   o.encode.mode = args.mode == "multiply" ? BakeMode::kMultiply : BakeMode::kReplace;
   o.encode.format = args.color_format == "unorm8" ? ColorFormat::kUnorm8
                     : args.color_format == "float" ? ColorFormat::kFloat : ColorFormat::kUnorm16;
-  o.cancel = &g_interrupted;
+  o.cancel = &interrupt_requested();
   return o;
 }
 
@@ -122,81 +108,155 @@ void print_summary(const std::string& output, const BakeFileResult& r, const std
   std::fprintf(stderr, ")\n");
 }
 
-int run_bake(const BakeArgs& args) {
-  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
-  std::vector<std::pair<std::string, fs::path>> files;
-  bool batch = args.inputs.size() > 1;
-  for (const auto& arg : args.inputs) {
-    std::error_code ec;
-    if (fs::is_directory(arg, ec) || (!fs::exists(arg, ec) && arg.find_first_of("*?[") != std::string::npos)) batch = true;
-    const auto expanded = expand_input(arg);
-    files.insert(files.end(), expanded.begin(), expanded.end());
-  }
-  std::error_code ec;
-  if (fs::is_directory(args.output, ec)) batch = true;
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
-  BakeFileOptions options = file_options(args);
-  if (!batch) {
-    Progress progress("lighting " + files[0].first, !args.quiet);
-    options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
-    try {
-      const BakeFileResult r = bake_file(files[0].first, args.output, options);
-      progress.finish();
-      for (const auto& w : r.warnings) print_warning(w);
-      if (args.explain) print_explain(files[0].first, r);
-      if (!args.quiet) print_summary(args.output, r, args.color_format);
-    } catch (const InputError&) {
-      progress.finish();
-      if (g_interrupted.load()) {
-        print_error(files[0].first + ": interrupted; no output written");
-        return 130;
-      }
-      throw;
-    }
+// The shard this process bakes: --shard I/N, or --shard auto from the environment (batch/shard.h).
+Shard chosen_shard(const BakeArgs& args) {
+  if (args.shard != "auto") return parse_shard(args.shard);
+  const ShardSource source = shard_from_environment([](const char* name) { return std::getenv(name); });
+  if (!args.quiet) std::fprintf(stderr, "shard %s from %s\n", source.shard.text().c_str(), source.from.c_str());
+  return source.shard;
+}
+
+int run_single(const BakeArgs& args, const BatchInput& input, BakeFileOptions options) {
+  const std::string& in = input.path;
+  std::unique_ptr<ManifestWriter> manifest;
+  if (!args.manifest.empty()) manifest = std::make_unique<ManifestWriter>(args.manifest);
+  ManifestRecord record{in, input.key, args.output, "", "", 0, 0, "", ""};
+  auto log = [&](const std::string& status, const std::string& error) {
+    if (!manifest) return;
+    record.status = status;
+    record.error = error;
+    record.time = utc_timestamp();
+    manifest->append(record);
+  };
+  if (args.skip_existing && output_is_current(args.output, in, args.lights)) {
+    if (!args.quiet) std::fprintf(stderr, "%s is newer than %s: skipped (--skip-existing)\n", args.output.c_str(), in.c_str());
+    log("skipped", "");
     return 0;
   }
+  Progress progress("lighting", in, !args.quiet);
+  options.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
+  const auto start = std::chrono::steady_clock::now();
+  try {
+    const BakeFileResult r = bake_file(in, args.output, options);
+    progress.finish();
+    record.vertices = r.report.vertices;
+    record.seconds = seconds_since(start);
+    log("baked", "");
+    for (const auto& w : r.warnings) print_warning(w);
+    if (args.explain) print_explain(in, r);
+    if (!args.quiet) print_summary(args.output, r, args.color_format);
+  } catch (const std::exception& e) {
+    progress.finish();
+    record.seconds = seconds_since(start);
+    if (interrupt_requested().load()) {
+      log("interrupted", "interrupted; no output written");
+      print_error(in + ": interrupted; no output written");
+      return 130;
+    }
+    log("failed", e.what());
+    throw;
+  }
+  return 0;
+}
 
-  // Batch: OUT is a directory; each input keeps its relative path and its extension (.glb for a
-  // mesh file).
+// The batch: every input keeps its path relative to its argument under OUT (batch/batch_inputs.h);
+// with --shard only this shard's inputs are baked.
+int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeFileOptions options) {
+  namespace fs = std::filesystem;
+  std::vector<BatchItem> items = lay_out_batch(inputs, args.output);  // throws on a collision: nothing written yet
+  const std::size_t batch_size = items.size();
+  std::optional<Shard> shard;
+  if (!args.shard.empty()) {
+    shard = chosen_shard(args);
+    std::erase_if(items, [&](const BatchItem& item) { return shard_of_key(item.key, shard->count) != shard->index; });
+  }
+  std::error_code ec;
+  // `-o baked.glb` with several inputs or --shard is a mistake, not a folder to create.
+  if (!fs::exists(args.output, ec) && is_gltf_path(args.output))
+    throw InputError(args.output, "a batch (several inputs, a directory, a pattern or --shard) needs -o to be a "
+                                  "directory, not a .glb or .gltf file name");
+  std::unique_ptr<ManifestWriter> manifest;
+  if (!args.manifest.empty()) manifest = std::make_unique<ManifestWriter>(args.manifest);
   if (!fs::exists(args.output, ec)) fs::create_directories(args.output, ec);
   if (!fs::is_directory(args.output, ec)) throw InputError(args.output, "a batch needs -o to be a directory");
-  std::vector<std::string> failures;
-  BatchProgress progress(files.size(), !args.quiet);
+  if (shard && !args.quiet)
+    std::fprintf(stderr, "shard %s: %zu of %zu inputs\n", shard->text().c_str(), items.size(), batch_size);
+  if (args.skip_existing) {
+    std::set<std::string> outputs;
+    for (const BatchItem& item : items) outputs.insert(item.output.lexically_normal().string());
+    const std::size_t removed = remove_abandoned_temporaries(args.output, outputs);
+    if (removed > 0 && !args.quiet)
+      std::fprintf(stderr, "removed %zu temporary file(s) left by a killed run\n", removed);
+  }
+
+  std::size_t baked = 0, skipped = 0, failed = 0, done = 0;
+  BatchProgress progress(items.size(), !args.quiet);
   options.progress = [&](std::size_t done_vertices, std::size_t total) { progress.update_file(done_vertices, total); };
-  std::size_t done = 0;
-  for (const auto& [input, relative] : files) {
-    if (g_interrupted.load()) break;
-    fs::path output = fs::path(args.output) / relative;
-    if (!is_gltf_path(input)) output.replace_extension(".glb");  // a mesh file's bake is a new glTF
-    progress.start_file(relative.string());
-    try {
-      fs::create_directories(output.parent_path(), ec);
-      const BakeFileResult r = bake_file(input, output.string(), options);
-      if (!r.warnings.empty() || args.explain) progress.clear();
-      for (const auto& w : r.warnings) print_warning(w);
-      if (args.explain) print_explain(input, r);
-    } catch (const InputError& e) {
-      progress.clear();
-      print_error(e.what());
-      failures.push_back(input);
-    } catch (const std::exception& e) {
-      progress.clear();
-      print_error(input + ": " + e.what());
-      failures.push_back(input);
+  for (const BatchItem& item : items) {
+    if (interrupt_requested().load()) break;
+    const std::string output = item.output.string();
+    ManifestRecord record{item.input, item.key, output, shard ? shard->text() : "", "", 0, 0, "", ""};
+    const auto start = std::chrono::steady_clock::now();
+    if (args.skip_existing && output_is_current(output, item.input, args.lights)) {
+      record.status = "skipped";
+      ++skipped;
+    } else {
+      progress.start_file(item.key);
+      try {
+        fs::create_directories(item.output.parent_path(), ec);
+        const BakeFileResult r = bake_file(item.input, output, options);
+        if (!r.warnings.empty() || args.explain) progress.clear();
+        for (const auto& w : r.warnings) print_warning(w);
+        if (args.explain) print_explain(item.input, r);
+        record.status = "baked";
+        record.vertices = r.report.vertices;
+        ++baked;
+      } catch (const std::exception& e) {
+        progress.clear();
+        const bool interrupted = interrupt_requested().load();
+        record.status = interrupted ? "interrupted" : "failed";
+        record.error = dynamic_cast<const InputError*>(&e) ? e.what() : item.input + ": " + e.what();
+        print_error(record.error);
+        if (!interrupted) ++failed;
+      }
     }
+    record.seconds = seconds_since(start);
+    record.time = utc_timestamp();
+    if (manifest) manifest->append(record);
     ++done;
     progress.finish_file();
   }
   progress.clear();
-  const std::size_t skipped = files.size() - done;
-  if (!args.quiet || !failures.empty() || skipped > 0)
-    std::fprintf(stderr, "%zu of %zu files baked into %s; %zu failed%s\n", done - failures.size(), files.size(),
-                 args.output.c_str(), failures.size(),
-                 skipped > 0 ? (", " + std::to_string(skipped) + " not started (interrupted)").c_str() : "");
-  if (g_interrupted.load()) return 130;
-  return failures.empty() ? 0 : 1;
+  const std::size_t not_started = items.size() - done;
+  if (!args.quiet || failed > 0 || not_started > 0) {
+    std::string line = std::to_string(baked) + " of " + std::to_string(items.size()) + " files baked into " + args.output;
+    if (skipped > 0) line += "; " + std::to_string(skipped) + " up to date (skipped)";
+    line += "; " + std::to_string(failed) + " failed";
+    if (interrupt_requested().load()) line += "; interrupted, " + std::to_string(items.size() - baked - skipped - failed) + " not baked";
+    std::fprintf(stderr, "%s\n", line.c_str());
+  }
+  if (interrupt_requested().load()) return 130;
+  return failed == 0 ? 0 : 1;
+}
+
+int run_bake(const BakeArgs& args) {
+  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
+  install_interrupt_handlers();
+  std::vector<BatchInput> inputs;
+  bool batch = args.inputs.size() > 1 || !args.shard.empty();
+  for (const auto& arg : args.inputs) {
+    if (is_batch_argument(arg)) batch = true;
+    const auto expanded = expand_batch_argument(arg);
+    inputs.insert(inputs.end(), expanded.begin(), expanded.end());
+  }
+  std::error_code ec;
+  if (std::filesystem::is_directory(args.output, ec)) batch = true;
+  const BakeFileOptions options = file_options(args);
+  return batch ? run_batch(args, inputs, options) : run_single(args, inputs.front(), options);
 }
 
 }  // namespace
@@ -206,7 +266,7 @@ Runner add_bake_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bake", "Light every vertex and store the light as glTF vertex colors (COLOR_0).");
   cmd->add_option("inputs", args->inputs,
                   "Input assets (.gltf or .glb; OBJ, PLY, OFF or STL meshes become a new glTF), directories "
-                  "(searched recursively for glTF) or quoted glob patterns; inputs are never modified")
+                  "(searched recursively for all of these) or quoted glob patterns; inputs are never modified")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output file (.glb or .gltf) for one input; for several inputs, a directory")
@@ -230,6 +290,9 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_option("--shadows", args->shadows,
                   "on: lights are hidden by the scene's triangles (soft shadows, docs/shadows.md); off (default)")
       ->check(CLI::IsMember({"on", "off"}));
+  cmd->add_flag("--keep-image-links", args->keep_image_links,
+                "In a .glb output, keep the input's image files as links (rewritten relative to the output) "
+                "instead of embedding them; a .gltf output always keeps links");
   cmd->add_flag("--explain", args->explain,
                 "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
@@ -239,9 +302,22 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
                   "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--shard", args->shard,
+                  "I/N: bake only shard I (0 .. N-1) of the batch; the N shards together bake every input once, "
+                  "each input's shard set by its path under its argument (docs/batch-sharding.md). auto: from a "
+                  "Slurm job array, a Kubernetes Indexed Job (with VLIT_SHARD_COUNT), GNU parallel (PARALLEL_SEQ, "
+                  "with VLIT_SHARD_COUNT) or VLIT_SHARD_INDEX/VLIT_SHARD_COUNT");
+  cmd->add_flag("--skip-existing", args->skip_existing,
+                "Keep an output that is newer than its input and --lights file (to resume a batch); the bake "
+                "options are not compared");
+  cmd->add_option("--manifest", args->manifest,
+                  "Append one JSON line per input to this file: input, output, status, vertices, seconds, error "
+                  "(merge with 'vlit manifest-summary')");
   cmd->footer("The baked color is the multiplier glTF viewers apply to the base color: viewer = light x albedo.\n"
               "Outputs are written atomically; a failed or interrupted file leaves no output. A batch keeps going\n"
-              "when a file fails and exits 1 with a summary.");
+              "when a file fails and exits 1 with a summary; its outputs keep the inputs' folders under -o (two\n"
+              "inputs for one output are an error before anything is written). Ctrl-C stops within about a\n"
+              "second (exit 130); a second Ctrl-C stops at once.");
   return [args] { return run_bake(*args); };
 }
 

@@ -13,5 +13,6 @@ using Runner = std::function<int()>;
 Runner add_bake_command(CLI::App& app);
 Runner add_render_command(CLI::App& app);
 Runner add_probe_command(CLI::App& app);
+Runner add_manifest_summary_command(CLI::App& app);
 
 }  // namespace vlit::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   const vlit::cli::Runner bake = vlit::cli::add_bake_command(app);
   const vlit::cli::Runner render = vlit::cli::add_render_command(app);
   const vlit::cli::Runner probe = vlit::cli::add_probe_command(app);
+  const vlit::cli::Runner manifest_summary = vlit::cli::add_manifest_summary_command(app);
 
   try {
     app.parse(argc, argv);
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bake")) return bake();
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("probe")) return probe();
+    if (app.got_subcommand("manifest-summary")) return manifest_summary();
   } catch (const vlit::InputError& e) {
     vlit::cli::print_error(e.what());
     return 1;

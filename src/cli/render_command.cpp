@@ -122,7 +122,7 @@ int run_render(const RenderArgs& args) {
   if (normals_view) {
     meshes = normal_view_meshes(loaded.scene);
   } else {
-    Progress progress("lighting " + args.input, !args.quiet);
+    Progress progress("lighting", args.input, !args.quiet);
     LightingRequest request;
     request.eye = Vec3d{camera.world_from_camera.m[0][3], camera.world_from_camera.m[1][3], camera.world_from_camera.m[2][3]};
     request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };

@@ -13,11 +13,16 @@ void print_warning(const std::string& line);
 void print_error(const std::string& line);
 
 bool stderr_is_terminal();
+// Columns of the terminal on stderr (TIOCGWINSZ, else $COLUMNS, else 80).
+std::size_t terminal_columns();
 
 // Progress of one file: "lighting FILE  45%  1.20 M vertices/s  ETA 3 s" (bake/progress_line.h).
+// The line fits the terminal's width (FILE is shortened from the left). Whether drawn or not
+// (--quiet, not a terminal), a bake whose time left is long gets one warning line
+// (bake/progress_line.h, long_bake_warning).
 class Progress {
  public:
-  Progress(std::string label, bool enabled);
+  Progress(const std::string& verb, std::string name, bool enabled);
   // Redraws at most ten times a second.
   void update(std::size_t done, std::size_t total);
   void finish();  // ends the line if one was drawn
@@ -25,9 +30,12 @@ class Progress {
  private:
   friend class BatchProgress;
   bool due(bool last);
-  void draw(const std::string& line);
-  std::string label_;
+  void draw(const std::string& line, const std::string& name);
+  // Prints the long-bake warning once, if due.
+  void warn_if_long(const std::string& name, double done, double total, double seconds);
+  std::string label_, name_;
   bool enabled_;
+  bool warned_ = false;
   bool drawn_ = false;
   std::size_t width_ = 0;  // characters of the last line drawn, to blank a shorter one
   std::chrono::steady_clock::time_point start_, last_;
@@ -48,6 +56,7 @@ class BatchProgress {
   std::size_t files_, files_done_ = 0;
   std::string current_;
   double fraction_ = 0;
+  std::chrono::steady_clock::time_point file_start_;
 };
 
 }  // namespace vlit::cli

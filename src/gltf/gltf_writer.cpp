@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <cstring>
+#include <map>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -9,6 +10,7 @@
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
 #include "io/atomic_write.h"
+#include "io/read_file.h"
 
 namespace vlit {
 namespace {
@@ -38,6 +40,68 @@ std::string percent_encode_path(const std::string& s) {
 
 bool is_relative_uri(const std::string& uri) {
   return !uri.empty() && uri.rfind("data:", 0) != 0 && uri.find("://") == std::string::npos && uri[0] != '/';
+}
+
+// "%20" -> " ": a URI's path as a file name (glTF URIs are percent-encoded, RFC 3986).
+std::string percent_decode(const std::string& uri) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// The image's media type from its first bytes; empty when unknown.
+std::string image_mime_type(const std::string& bytes) {
+  auto starts = [&](std::string_view signature, std::size_t at = 0) {
+    return bytes.size() >= at + signature.size() && bytes.compare(at, signature.size(), signature) == 0;
+  };
+  if (starts("\x89PNG\r\n\x1a\n")) return "image/png";
+  if (starts("\xff\xd8\xff")) return "image/jpeg";
+  if (starts("RIFF") && starts("WEBP", 8)) return "image/webp";
+  if (starts("\xabKTX 20\xbb\r\n\x1a\n")) return "image/ktx2";
+  return {};
+}
+
+// Copies the files of relative URI images into buffer 0 (the .glb's binary chunk) as new
+// bufferViews; an image file named twice is stored once. Call after merge_buffers.
+void embed_images(tinygltf::Model& model, const fs::path& in_dir) {
+  std::map<std::string, std::pair<int, std::string>> view_of_file;  // file -> bufferView, mimeType
+  for (std::size_t i = 0; i < model.images.size(); ++i) {
+    tinygltf::Image& image = model.images[i];
+    if (image.bufferView >= 0 || !is_relative_uri(image.uri)) continue;
+    const std::string file = (in_dir / percent_decode(image.uri)).lexically_normal().string();
+    auto it = view_of_file.find(file);
+    if (it == view_of_file.end()) {
+      std::string bytes;
+      try {
+        bytes = read_text_file(file);
+      } catch (const InputError&) {
+        continue;  // missing or unreadable in the input too (the loader tolerates it): left as a link
+      }
+      const std::string mime = image_mime_type(bytes);
+      if (mime.empty()) continue;  // not a glTF image type: left as a link
+      if (model.buffers.empty()) model.buffers.emplace_back();
+      auto& data = model.buffers[0].data;
+      while (data.size() % 4 != 0) data.push_back(0);
+      tinygltf::BufferView view;
+      view.buffer = 0;
+      view.byteOffset = data.size();
+      view.byteLength = bytes.size();
+      data.insert(data.end(), bytes.begin(), bytes.end());
+      model.bufferViews.push_back(view);
+      it = view_of_file.emplace(file, std::make_pair(static_cast<int>(model.bufferViews.size()) - 1, mime)).first;
+    }
+    image.bufferView = it->second.first;
+    image.mimeType = it->second.second;
+    image.uri.clear();
+  }
 }
 
 void merge_buffers(tinygltf::Model& model) {
@@ -124,7 +188,8 @@ std::string repaired(const std::string& bytes, bool binary, const tinygltf::Mode
 
 }  // namespace
 
-void write_gltf(tinygltf::Model model, const std::string& input_path, const std::string& output_path) {
+void write_gltf(tinygltf::Model model, const std::string& input_path, const std::string& output_path,
+                const GltfWriteOptions& options) {
   const bool binary = [&] {
     std::string ext = fs::path(output_path).extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -137,9 +202,10 @@ void write_gltf(tinygltf::Model model, const std::string& input_path, const std:
   else
     for (auto& b : model.buffers) b.uri.clear();
 
-  // Keep relative image URIs pointing at the same files from the output's directory.
   std::error_code ec;
   const fs::path in_dir = fs::absolute(fs::path(input_path)).parent_path();
+  if (binary && options.embed_images) embed_images(model, in_dir);
+  // Keep the other relative image URIs pointing at the same files from the output's directory.
   const fs::path out_dir = fs::absolute(fs::path(output_path)).parent_path();
   if (fs::weakly_canonical(in_dir, ec) != fs::weakly_canonical(out_dir, ec)) {
     const fs::path prefix = fs::relative(in_dir, out_dir, ec);

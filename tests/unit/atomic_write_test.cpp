@@ -38,3 +38,13 @@ TEST_CASE("atomic write into a missing directory fails with the path and leaves 
   CHECK_THROWS_WITH_AS(write_file_atomically(path, "x"), doctest::Contains(path.c_str()), InputError);
   CHECK(entries(dir) == 0);
 }
+
+TEST_CASE("output_of_temporary: the file a hidden temporary was for, nothing else") {
+  CHECK(output_of_temporary("out/.Duck.glb.vlit-tmp-Ab12Cd") == "out/Duck.glb");
+  CHECK(output_of_temporary(".a.gltf.vlit-tmp-XXXXXX") == "a.gltf");
+  CHECK(output_of_temporary("out/Duck.glb").empty());
+  CHECK(output_of_temporary("out/.Duck.glb.vlit-tmp-Ab12C").empty());    // 5 random characters
+  CHECK(output_of_temporary("out/.Duck.glb.vlit-tmp-Ab12Cde").empty());  // 7
+  CHECK(output_of_temporary("out/Duck.glb.vlit-tmp-Ab12Cd").empty());    // not hidden
+  CHECK(output_of_temporary("out/..vlit-tmp-Ab12Cd").empty());           // no name
+}

@@ -4,7 +4,7 @@
 # -DCMAKE_PREFIX_PATH and runs it on the bundled demo scene; builds a second consumer through
 # pkg-config alone, which reads the baked file back with vlit's loader and checks COLOR_0 (and the
 # Khronos glTF-Validator checks it when node and npm are present); then builds the Debian package
-# with cpack and checks its metadata and contents. Reuses build/release (builds only the library
+# with cpack, checks its metadata and contents, and builds the example against its unpacked files. Reuses build/release (builds only the library
 # and the binary if they are out of date). Exit status 1 on any failure.
 #   scripts/install-test.sh [BUILD_DIR]     (default build/release)
 set -euo pipefail
@@ -62,5 +62,11 @@ for f in ./usr/bin/vlit ./usr/include/vlit/vlit.h ./usr/lib/libvlit.a ./usr/lib/
          ./usr/lib/cmake/vlit/vlitConfigVersion.cmake ./usr/lib/cmake/vlit/vlitTargets.cmake ./usr/lib/pkgconfig/vlit.pc; do
   echo "$contents" | grep -q " $f\$" || fail "$f not in $(basename "$deb")"
 done
+# The packaged files themselves (unpacked, not installed): the example builds against them too.
+dpkg-deb -x "$deb" "$work/unpacked"
+cmake -S examples/bake_tube_light -B "$work/example-deb" -G Ninja -DCMAKE_PREFIX_PATH="$work/unpacked/usr" \
+  >"$work/example-deb.log" 2>&1 && cmake --build "$work/example-deb" >>"$work/example-deb.log" 2>&1 \
+  || { cat "$work/example-deb.log"; fail "example against the unpacked .deb"; }
+grep -q "$work/unpacked/usr/lib/cmake/vlit" "$work/example-deb/CMakeCache.txt" || fail "the example did not use the unpacked package"
 step "$(basename "$deb"): $(echo "$contents" | grep -vc '/$') files, $(du -h "$deb" | cut -f1)"
 step "OK"

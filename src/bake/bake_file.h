@@ -9,11 +9,14 @@
 #include <vector>
 
 #include "bake/vertex_color_bake.h"
+#include "gltf/gltf_scene.h"
 
 namespace vlit {
 
 struct BakeFileOptions {
   std::string lights_path;        // LIGHTS.json, may be empty
+  std::vector<LightSource> lights;  // added after those of lights_path (the library API, src/api/)
+  std::optional<SceneLimits> limits;  // empty = default_scene_limits()
   bool use_file_lights = true;    // keep the asset's KHR_lights_punctual lights
   bool float_batch = true;        // diffuse in the float SIMD batch kernels where they apply (LightingRequest)
   bool shadows = false;           // --shadows on (docs/shadows.md)

@@ -128,10 +128,14 @@ GltfFile load_gltf_file(const std::string& path) {
     file.warnings.push_back(path + ": " + first);
   }
 
-  for (const std::string& ext : file.model.extensionsRequired)
-    for (const char* undecodable : kUndecodableExtensions)
-      if (ext == undecodable) throw InputError(path, "requires " + ext + ", which vlit does not decode");
+  check_decodable(file.model, path);
   return file;
+}
+
+void check_decodable(const tinygltf::Model& model, const std::string& name) {
+  for (const std::string& ext : model.extensionsRequired)
+    for (const char* undecodable : kUndecodableExtensions)
+      if (ext == undecodable) throw InputError(name, "requires " + ext + ", which vlit does not decode");
 }
 
 }  // namespace vlit

@@ -20,6 +20,10 @@ struct GltfFile {
 // Throws InputError(path, ...) if the file cannot be parsed or needs an unsupported extension.
 GltfFile load_gltf_file(const std::string& path);
 
+// Throws InputError(name, ...) if the model requires an extension that stores geometry in a way
+// vlit cannot decode (Draco, meshopt); load_gltf_file applies it to every file.
+void check_decodable(const tinygltf::Model& model, const std::string& name);
+
 // True if the path names a glTF asset (by extension .gltf / .glb, case-insensitive).
 bool is_gltf_path(const std::string& path);
 

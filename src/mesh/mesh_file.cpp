@@ -35,6 +35,10 @@ bool is_mesh_path(const std::string& path) {
 }
 
 Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings) {
+  return load_mesh_file(path, warnings, default_scene_limits().max_vertices);
+}
+
+Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings, std::size_t max_vertices) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "cannot open: not a regular file");
   TriMesh mesh;
@@ -48,7 +52,7 @@ Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings
   if (!ok) throw InputError(path, "cannot read this " + extension_of(path) + " file (OpenMesh reader failed)");
   if (mesh.n_faces() == 0) throw InputError(path, "the mesh has no faces");
   // Same vertex limit as glTF scenes (gltf/gltf_scene.h); OpenMesh's own memory is bounded by the file.
-  if (const std::size_t limit = default_scene_limits().max_vertices; mesh.n_vertices() > limit)
+  if (const std::size_t limit = max_vertices; mesh.n_vertices() > limit)
     throw InputError(path, "the mesh has more than " + std::to_string(limit) +
                                " vertices (the limit that protects the machine; raise it with --max-vertices)");
 

@@ -15,5 +15,7 @@ bool is_mesh_path(const std::string& path);
 
 // Throws InputError(path, ...) when the file cannot be read or has no triangles.
 Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings);
+// Same with an explicit vertex limit instead of default_scene_limits().max_vertices.
+Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings, std::size_t max_vertices);
 
 }  // namespace vlit

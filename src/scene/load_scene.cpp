@@ -8,13 +8,18 @@
 namespace vlit {
 
 LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights) {
+  return load_scene(asset_path, lights_path, use_file_lights, default_scene_limits());
+}
+
+LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights,
+                       const SceneLimits& limits) {
   LoadedScene loaded;
   if (is_gltf_path(asset_path)) {
     loaded.gltf = load_gltf_file(asset_path);
     loaded.warnings = loaded.gltf->warnings;
-    loaded.scene = build_scene(*loaded.gltf, loaded.warnings, default_scene_limits(), use_file_lights);
+    loaded.scene = build_scene(*loaded.gltf, loaded.warnings, limits, use_file_lights);
   } else if (is_mesh_path(asset_path)) {
-    loaded.scene = load_mesh_file(asset_path, loaded.warnings);
+    loaded.scene = load_mesh_file(asset_path, loaded.warnings, limits.max_vertices);
   } else {
     throw InputError(asset_path, "unsupported file type (expected .gltf, .glb, .obj, .ply, .off or .stl)");
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "gltf/gltf_file.h"
+#include "gltf/gltf_scene.h"
 #include "scene/scene.h"
 
 namespace vlit {
@@ -21,5 +22,8 @@ struct LoadedScene {
 // The file's own lights (KHR_lights_punctual) are kept unless use_file_lights is false; the
 // lights of LIGHTS.json are added to them.
 LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights = true);
+// Same with explicit limits instead of default_scene_limits() (the library API, src/api/).
+LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights,
+                       const SceneLimits& limits);
 
 }  // namespace vlit

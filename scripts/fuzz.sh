@@ -21,12 +21,11 @@ cmake --build --preset fuzz -j2 >/dev/null
 corpus=$build/corpus/$target
 findings=$build/findings/$target
 mkdir -p "$corpus" "$findings"
-shared=../shared/assets
 seed() { [[ -f "$1" ]] && cp -n "$1" "$corpus/seed-$(basename "$(dirname "$1")")-$(basename "$1")" || true; }
 case "$target" in
   gltf)
     # Self-contained assets (GLB, embedded buffers) and the malformed corpus; nothing over 1 MB.
-    while IFS= read -r -d '' f; do seed "$f"; done < <(find "$shared/gltf" "$shared/bad-gltf" assets \
+    while IFS= read -r -d '' f; do seed "$f"; done < <(find assets \
         \( -name '*.gltf' -o -name '*.glb' \) -size -1024k -print0 2>/dev/null)
     dict=(-dict=fuzz/gltf.dict) ;;
   lights_json)

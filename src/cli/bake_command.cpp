@@ -18,6 +18,7 @@
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
 #include "gltf/gltf_scene.h"
+#include "mesh/mesh_file.h"
 
 namespace vlit::cli {
 namespace {
@@ -45,18 +46,18 @@ struct BakeArgs {
   std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
 };
 
-// An input argument as a list of glTF files: a file as is, a directory searched recursively, a
-// pattern with * ? [ expanded (for shells that pass it through quoted). Each file is paired with
+// An input argument as a list of input files: a file as is, a directory searched recursively for
+// glTF and mesh files (OBJ, PLY, OFF, STL), a pattern with * ? [ expanded (for shells that pass it through quoted). Each file is paired with
 // its path relative to the argument's root, which names its output in a batch.
 std::vector<std::pair<std::string, fs::path>> expand_input(const std::string& arg) {
   std::vector<std::pair<std::string, fs::path>> files;
   std::error_code ec;
   if (fs::is_directory(arg, ec)) {
     for (auto it = fs::recursive_directory_iterator(arg, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
-      if (it->is_regular_file(ec) && is_gltf_path(it->path().string()))
+      if (it->is_regular_file(ec) && (is_gltf_path(it->path().string()) || is_mesh_path(it->path().string())))
         files.emplace_back(it->path().string(), fs::relative(it->path(), arg, ec));
     std::sort(files.begin(), files.end());
-    if (files.empty()) throw InputError(arg, "directory holds no .gltf or .glb file");
+    if (files.empty()) throw InputError(arg, "directory holds no .gltf, .glb, .obj, .ply, .off or .stl file");
   } else if (!fs::exists(arg, ec) && arg.find_first_of("*?[") != std::string::npos) {
     glob_t g{};
     if (::glob(arg.c_str(), 0, nullptr, &g) == 0)

@@ -207,6 +207,17 @@ TEST_CASE("bake of a mesh file writes a new glTF with its light in COLOR_0") {
   CHECK_MESSAGE(rb.exit_code == 0, rb.err);
   CHECK(std::filesystem::exists(batch / "tri.glb"));
   CHECK(std::filesystem::exists(batch / "tri2.glb"));
+  // A directory of mesh files is a batch too (it was refused as holding no glTF).
+  const auto meshes = dir / "meshes";
+  std::filesystem::create_directories(meshes / "sub");
+  std::filesystem::copy_file(obj, meshes / "a.obj");
+  std::filesystem::copy_file(obj, meshes / "sub" / "b.obj");
+  const auto from_dir = dir / "from-dir";
+  const auto rd = run_command(kVlit + " bake " + q(meshes.string()) + " --lights " + q(lights.string()) + " -o " +
+                              q(from_dir.string()) + " -q");
+  CHECK_MESSAGE(rd.exit_code == 0, rd.err);
+  CHECK(std::filesystem::exists(from_dir / "a.glb"));
+  CHECK(std::filesystem::exists(from_dir / "sub" / "b.glb"));
 }
 
 TEST_CASE("--explain prints the plan and per-stage times") {

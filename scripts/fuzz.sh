@@ -29,7 +29,7 @@ case "$target" in
         \( -name '*.gltf' -o -name '*.glb' \) -size -1024k -print0 2>/dev/null)
     dict=(-dict=fuzz/gltf.dict) ;;
   lights_json)
-    while IFS= read -r -d '' f; do seed "$f"; done < <(find assets -name '*.json' -size -64k -print0)
+    while IFS= read -r -d '' f; do seed "$f"; done < <(find assets -path assets/bad-gltf -prune -o -name '*.json' -size -64k -print0)
     printf '%s' '{"lights":[{"type":"area","polygon":[[0,0,1],[1,0,1],[1,1,1]],"intensity":2,"two_sided":true},{"type":"disk","center":[0,0,2],"normal":[0,0,-1],"radius":0.5},{"type":"spot","position":[0,0,3],"direction":[0,0,-1],"outer_cone_angle":0.5,"inner_cone_angle":0.2,"falloff":2.5,"color":[1,0.5,0.2]},{"type":"directional","direction":[0,-1,0],"name":"sun"}]}' \
         > "$corpus/seed-all-types.json"
     dict=() ;;

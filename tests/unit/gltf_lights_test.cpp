@@ -247,7 +247,7 @@ TEST_CASE("emissive triangles: a square ring (a hole) falls back to its triangle
   CHECK(diffuse_at(s).x == doctest::Approx(centered_rect(4, 4, 1) - centered_rect(2, 2, 1)).epsilon(1e-6));
 }
 
-TEST_CASE("emissive geometry: a material with an emissive texture is not a light; the limit keeps the brightest") {
+TEST_CASE("emissive geometry: a material with an emissive texture is not a light, the limit keeps the brightest") {
   SUBCASE("emissive texture") {
     GltfBuilder b;
     add_receiver(b);
@@ -371,7 +371,7 @@ TEST_CASE("receivers on an emissive polygon's corner, edge or plane, or on an em
   }
 }
 
-TEST_CASE("real assets: Box under an EXT_lights_area rect equals LIGHTS.json; LightsPunctualLamp's textured emission is no light") {
+TEST_CASE("real assets: Box under an EXT_lights_area rect equals LIGHTS.json, LightsPunctualLamp's textured emission is no light") {
   const std::string samples = std::string(VLIT_ASSETS_DIR) + "/samples";
   REQUIRE_MESSAGE(std::filesystem::exists(samples + "/Box/Box.gltf"), "missing test data: " << samples);
   GltfFile box = load_gltf_file(samples + "/Box/Box.gltf");

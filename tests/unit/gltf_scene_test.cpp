@@ -135,7 +135,7 @@ TEST_CASE("bad input: index out of range, node cycle, non-triangle primitives") 
   }
 }
 
-TEST_CASE("real assets load: Box, its interleaved variant, the sparse sample") {
+TEST_CASE("real assets load: Box and its interleaved variant") {
   const std::string samples = std::string(VLIT_ASSETS_DIR) + "/samples";
   REQUIRE_MESSAGE(std::filesystem::exists(samples + "/Box/Box.gltf"), "missing test data: " << samples);
   std::vector<std::string> warnings;

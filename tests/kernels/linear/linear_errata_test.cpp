@@ -100,7 +100,7 @@ TEST_CASE("erratum E1: C and D depend on the shading point, only E = Ld.Ld is pe
   }
 }
 
-TEST_CASE("erratum E2: the printed n = 1 form has the sign of its log term flipped; n = 0, 2, 3 are right") {
+TEST_CASE("erratum E2: the printed n = 1 form has the sign of its log term flipped, n = 0, 2, 3 are right") {
   const Config c = benign();
   const Sidebar<long double> s = sidebar<long double>(c);
   for (int n = 0; n <= 3; ++n) {

@@ -1743,6 +1743,12 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  // An asset named but absent is an error (the ctest entry must not pass without its input);
+  // no --asset at all runs the kernel tables only.
+  if (!o.asset.empty() && !std::filesystem::is_regular_file(o.asset)) {
+    std::fprintf(stderr, "accuracy_report: %s: no such file\n", o.asset.c_str());
+    return 2;
+  }
   if (!write_lights.empty()) {  // the comparison lights for bench/blender_bake.py, then stop
     try {
       const vlit::LoadedScene loaded = vlit::load_scene(o.asset, "", false);

@@ -2,7 +2,7 @@
 // one process (docs/performance.md):
 //
 //   cmake --build build/release --target batch_kernels_bench -j2
-//   ./build/release/bench/batch_kernels_bench --asset ../shared/assets/gltf/DamagedHelmet/glTF-Binary/DamagedHelmet.glb
+//   ./build/release/bench/batch_kernels_bench --asset DamagedHelmet.glb   (any glTF; docs/performance.md)
 //
 // Part 1, kernels: vertex x light evaluations per second of each diffuse kernel, three ways:
 // the scalar double kernel (the bake's path before the batch kernels), the same kernel

@@ -12,7 +12,7 @@
 # "import seconds". The lights come from a vlit LIGHTS.json (docs/lights-json.md) and are mapped
 # to Cycles as below.
 #
-# Radiometric mapping (vlit conventions: docs/conventions.md, ../shared/docs/MISSION.md). Every
+# Radiometric mapping (vlit conventions: docs/conventions.md "Radiometric definitions"). Every
 # material is replaced by a white Diffuse BSDF and Cycles bakes the DIFFUSE pass, direct light
 # only, colour included: the baked value is the radiance leaving a white Lambertian surface,
 # E / pi, with E the irradiance. vlit's COLOR_0 is Id = sum Ip * (geometric factor), which is E
@@ -31,7 +31,7 @@
 #   is then L E_geom / pi with E_geom = integral cos cos_l / r^2 dA. vlit's Id = Ip E_geom, so
 #   P = 4 pi A Ip. (Measured by --calibrate: see docs/accuracy.md.)
 # - linear (falloff 2 only): vlit's linear light is a continuum of isotropic point emitters,
-#   Ip dt each (MISSION.md, eq. 3-4). Neither of Blender's usual stand-ins has that emission
+#   Ip dt each (docs/conventions.md, eq. 3-4). Neither of Blender's usual stand-ins has that emission
 #   pattern: a thin rectangular area light is Lambertian (a cos theta_l factor, nothing along its
 #   plane), and an emissive tube's projected width gives a sin psi factor (psi: angle to the axis).
 #   So it becomes K point lights at the midpoints of K equal pieces, each of power 4 pi^2 Ip / K:

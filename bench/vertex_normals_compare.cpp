@@ -7,7 +7,7 @@
 // docs/conventions.md "Missing normals" quotes its output.
 //
 //   cmake --build build/release --target vertex_normals_compare
-//   ./build/release/bench/vertex_normals_compare ../shared/assets/gltf/DamagedHelmet/glTF-Binary/DamagedHelmet.glb ...
+//   ./build/release/bench/vertex_normals_compare assets/samples/Box/Box.gltf [more .gltf/.glb ...]
 //
 // Each primitive is given to OpenMesh with the glTF's own vertices (no welding), so both respect
 // the primitive's vertex split. OpenMesh "fast" = sum of unit face normals (uniform weights, so it

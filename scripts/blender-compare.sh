@@ -22,7 +22,8 @@ fi
 build=${VLIT_REPORT_BUILD_DIR:-build/report}
 out=${1:-$build/blender}
 samples=${VLIT_CYCLES_SAMPLES:-1,4,16,64,256,1024}
-asset=../shared/assets/gltf/DamagedHelmet/glTF-Binary/DamagedHelmet.glb
+# docs/accuracy.md used DamagedHelmet.glb (Khronos sample, not vendored); default: the vendored Avocado.
+asset=${VLIT_ACCURACY_ASSET:-assets/samples/Avocado/Avocado.gltf}
 
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null

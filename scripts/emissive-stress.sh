@@ -6,7 +6,9 @@
 # Needs: a release build, python3, GNU time (/usr/bin/time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-src=../shared/assets/gltf/MetalRoughSpheresNoTextures/glTF
+# MetalRoughSpheresNoTextures (Khronos sample, CC0, 676 KB) is not vendored: point
+# VLIT_EXTRA_ASSETS at a folder holding gltf/MetalRoughSpheresNoTextures/glTF/.
+src=${VLIT_EXTRA_ASSETS:-/nonexistent}/gltf/MetalRoughSpheresNoTextures/glTF
 [[ -d $src ]] || { echo "emissive-stress: $src not found" >&2; exit 2; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

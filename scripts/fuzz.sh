@@ -21,16 +21,15 @@ cmake --build --preset fuzz -j2 >/dev/null
 corpus=$build/corpus/$target
 findings=$build/findings/$target
 mkdir -p "$corpus" "$findings"
-shared=../shared/assets
 seed() { [[ -f "$1" ]] && cp -n "$1" "$corpus/seed-$(basename "$(dirname "$1")")-$(basename "$1")" || true; }
 case "$target" in
   gltf)
     # Self-contained assets (GLB, embedded buffers) and the malformed corpus; nothing over 1 MB.
-    while IFS= read -r -d '' f; do seed "$f"; done < <(find "$shared/gltf" "$shared/bad-gltf" assets \
+    while IFS= read -r -d '' f; do seed "$f"; done < <(find assets \
         \( -name '*.gltf' -o -name '*.glb' \) -size -1024k -print0 2>/dev/null)
     dict=(-dict=fuzz/gltf.dict) ;;
   lights_json)
-    while IFS= read -r -d '' f; do seed "$f"; done < <(find assets -name '*.json' -size -64k -print0)
+    while IFS= read -r -d '' f; do seed "$f"; done < <(find assets -path assets/bad-gltf -prune -o -name '*.json' -size -64k -print0)
     printf '%s' '{"lights":[{"type":"area","polygon":[[0,0,1],[1,0,1],[1,1,1]],"intensity":2,"two_sided":true},{"type":"disk","center":[0,0,2],"normal":[0,0,-1],"radius":0.5},{"type":"spot","position":[0,0,3],"direction":[0,0,-1],"outer_cone_angle":0.5,"inner_cone_angle":0.2,"falloff":2.5,"color":[1,0.5,0.2]},{"type":"directional","direction":[0,-1,0],"name":"sun"}]}' \
         > "$corpus/seed-all-types.json"
     dict=() ;;

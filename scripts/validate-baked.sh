@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Bakes the demo scene and real assets from ../shared/assets with the release build, then checks
+# Bakes the demo scene and the vendored sample models (assets/samples) with the release build, plus
+# any Khronos sample models under $VLIT_EXTRA_ASSETS (optional: a folder laid out as the
+# glTF-Sample-Assets Models/ folder, and mesh/StanfordBunny/stanford-bunny.obj), then checks
 # every output with the Khronos glTF-Validator (npm package gltf-validator, installed from the npm
 # registry into tests/validator/node_modules). Exit status 1 if any output has a validation error.
 # Needs: a release build (scripts/test.sh or scripts/demo.sh), node and npm.
@@ -16,20 +18,27 @@ $vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/stud
 # with and without specular folded in.
 $vlit bake assets/examples/file-lights.glb -o "$out/file-lights.glb" -q
 $vlit bake assets/examples/file-lights.glb -o "$out/file-lights-specular.gltf" --specular-eye 0,1.6,5.5 --specular exact -q
-shared=../shared/assets/gltf
-if [[ -d $shared ]]; then
+for f in assets/samples/*/*.gltf; do
+  $vlit bake "$f" --lights assets/demo/lights.json -o "$out/$(basename "${f%.*}").glb" -q
+done
+extra=${VLIT_EXTRA_ASSETS:-}/gltf
+if [[ -n ${VLIT_EXTRA_ASSETS:-} && -d $extra ]]; then
   for f in Box/glTF/Box.gltf BoxInterleaved/glTF-Binary/BoxInterleaved.glb SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf \
            Avocado/glTF/Avocado.gltf MetalRoughSpheresNoTextures/glTF/MetalRoughSpheresNoTextures.gltf \
            VertexColorTest/glTF/VertexColorTest.gltf LightsPunctualLamp/glTF/LightsPunctualLamp.gltf \
            Cameras/glTF/Cameras.gltf SimpleMeshes/glTF/SimpleMeshes.gltf Triangle/glTF/Triangle.gltf; do
-    [[ -f $shared/$f ]] || continue
+    [[ -f $extra/$f ]] || continue
     name=$(basename "${f%.*}")
-    $vlit bake "$shared/$f" --lights assets/demo/lights.json -o "$out/$name.glb" -q
+    $vlit bake "$extra/$f" --lights assets/demo/lights.json -o "$out/$name.glb" -q
   done
-  $vlit bake "$shared/VertexColorTest/glTF/VertexColorTest.gltf" --lights assets/demo/lights.json --mode multiply \
+  $vlit bake "$extra/VertexColorTest/glTF/VertexColorTest.gltf" --lights assets/demo/lights.json --mode multiply \
     --color-format float -o "$out/VertexColorTest-multiply.gltf" -q
 fi
-# A mesh file (OBJ through OpenMesh) baked into a new glTF document.
-bunny=../shared/assets/mesh/StanfordBunny/stanford-bunny.obj
+# A mesh file (OBJ through OpenMesh) baked into a new glTF document: a small tetrahedron written
+# here, and the Stanford bunny when VLIT_EXTRA_ASSETS has it.
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' > "$out/tetrahedron.obj"
+$vlit bake "$out/tetrahedron.obj" --lights assets/demo/lights.json -o "$out/tetrahedron.glb" -q
+rm "$out/tetrahedron.obj"
+bunny=${VLIT_EXTRA_ASSETS:-/nonexistent}/mesh/StanfordBunny/stanford-bunny.obj
 [[ -f $bunny ]] && $vlit bake "$bunny" --lights assets/demo/lights.json -o "$out/stanford-bunny.glb" -q
 node tests/validator/validate.js "$out"/*.glb "$out"/*.gltf

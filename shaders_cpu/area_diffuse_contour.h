@@ -3,7 +3,7 @@
 // Computes (unit intensity, kd = 1; conventions.h):
 //   Id = ∫_A max(0, cos theta) cos theta_l / r^2 dA = 1/2 Σ_i beta_i cos delta_i
 // over the polygon clipped to the upper hemisphere of P (Picott 1992 eq. 9 and 10; Lambert;
-// Nishita and Nakamae 1985, appendix). No 1/pi: MISSION.md "Area light".
+// Nishita and Nakamae 1985, appendix). No 1/pi: docs/conventions.md "Radiometric definitions".
 // In vector form, with a_i = Q_i - P: beta_i cos delta_i = N . (a_{i+1} x a_i) g_i,
 // g_i = beta_i / |a_i x a_{i+1}|, beta_i = atan2(|a_i x a_{i+1}|, a_i . a_{i+1}) (never acos).
 //

@@ -1,7 +1,7 @@
 // Area (panel) light: entry point. Diffuse by Lambert's contour integral, specular by the paper's
 // peak, its neighbourhood refinement, or the exact lobe integral.
 //
-// Computes, for unit intensity and kd = ks = 1 (conventions.h, MISSION.md "Area light"):
+// Computes, for unit intensity and kd = ks = 1 (conventions.h, docs/conventions.md "Radiometric definitions"):
 //   diffuse  = ∫_A max(0, cos theta) cos theta_l / r^2 dA                   area_diffuse_contour.h
 //   specular = max over the visible light of max(0, Rv.w)^m                  area_specular_peak.h
 //            | peak x covered fraction of its neighbourhood                  area_specular_neighborhood.h

@@ -173,7 +173,7 @@ AreaView<R> make_area_view(const PreparedAreaLight<T>& pl, const Vec3<R>& p) {
   return view;
 }
 
-// The light clipped to the upper hemisphere of P (horizon clipping, MISSION.md).
+// The light clipped to the upper hemisphere of P (horizon clipping, docs/conventions.md).
 template <class T, class R = AreaReal<T>>
 void clip_to_horizon(const PreparedAreaLight<T>& pl, const AreaView<R>& view, const Vec3<R>& n,
                      ClipPolygon<R>& out) {

@@ -5,7 +5,7 @@
 //   Is(exact) = ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA
 //             = ∫_Omega [N.w > 0] max(0, Rv.w)^m dw        (cos theta_l dA / r^2 = dw)
 //
-// Sources: MISSION.md "Area light" (the definition); Picott 1992 "Future work" (the paper has no
+// Sources: docs/conventions.md "Radiometric definitions" (the definition); Picott 1992 "Future work" (the paper has no
 // exact area specular). The reduction to the boundary is the same idea as eq. 9 (Lambert's
 // contour integral) with polar coordinates about Rv instead of Stokes' theorem.
 //

@@ -10,7 +10,7 @@
 //   nothing, to the diffuse and to the specular term. The paper ignores this; we do not.
 // - Diffuse = Ip kd ∫ max(0, cos theta) (falloff) over the light, specular = Ip ks ∫ [L.N > 0]
 //   max(0, Rv.L̂)^m (or the paper's most-important-point approximation of it); see
-//   ../shared/docs/MISSION.md "Radiometric conventions" and docs/conventions.md.
+//   docs/conventions.md "Radiometric definitions".
 // - Colours are linear RGB everywhere; encoding (sRGB PNG, unorm glTF) happens only at output.
 //
 // Scalar type: every kernel is a template on T = float or double. Kernels know nothing about

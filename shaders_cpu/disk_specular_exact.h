@@ -17,7 +17,7 @@
 // Each piece is integrated by the same globally adaptive Gauss-Kronrod 7/15 as the polygon edges,
 // with initial cuts graded around the rim point nearest P (width ~ its distance) and the rim
 // point nearest the lobe's axis (width ~ lobe width), until Σ error <= tol |Σ value|.
-// Sources: MISSION.md "Area light" (the definition); Picott 1992 eq. 9's contour idea.
+// Sources: docs/conventions.md "Radiometric definitions" (the definition); Picott 1992 eq. 9's contour idea.
 // Scalar type: R = AreaReal<T> (double for T = float).
 // Stiff cases and measurements: tests/kernels/area/disk_test.cpp, docs/area-lights.md.
 #pragma once

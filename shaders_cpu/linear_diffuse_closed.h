@@ -1,7 +1,7 @@
 // Linear light, diffuse term, closed forms for the integer falloffs n = 0, 1, 2, 3.
 //
 // What it computes: Id = ∫_0^1 max(0, L(t).N) / |L(t)|^(n+1) dt for unit intensity
-// (Picott 1992 eq. 4, MISSION.md "Linear light"), with the segment clipped to the upper half
+// (Picott 1992 eq. 4, docs/conventions.md "Radiometric definitions"), with the segment clipped to the upper half
 // space of P first (conventions.h).
 //
 // Sources: Picott 1992 eq. 2-4 and the sidebar "Linear-light diffuse integration calculations",

@@ -2,7 +2,7 @@
 //
 // What it computes: the diffuse Id = ∫_0^1 max(0, L.N)/|L|^(n+1) dt and the specular (peak,
 // neighbourhood or exact, SpecularOptions::method) of a segment light of unit intensity per unit
-// t, with kd = ks = 1 (conventions.h; MISSION.md "Linear light"; Picott 1992 eq. 3-8).
+// t, with kd = ks = 1 (conventions.h; docs/conventions.md "Radiometric definitions"; Picott 1992 eq. 3-8).
 //
 // Dispatch: integer falloff n in {0,1,2,3} uses the closed forms (linear_diffuse_closed.h) unless
 // LinearDiffuseOptions::force_quadrature; any other n in [0, 3] uses linear_diffuse_quadrature.h.

@@ -1,7 +1,7 @@
 // Linear light, specular term, the Phong lobe integrated over the visible segment.
 //
 // What it computes: Is(exact) = ∫_0^1 [L(t).N > 0] max(0, Rv.L̂(t))^m dt for unit intensity
-// (MISSION.md "Linear light"), to the relative tolerance SpecularOptions::exact_tolerance.
+// (docs/conventions.md "Radiometric definitions"), to the relative tolerance SpecularOptions::exact_tolerance.
 //
 // Sources: Picott 1992 eq. 6 integrated along eq. 3 (the paper rejects this integral as too slow
 // and uses the peak, eq. 7-8; we keep it as the reference-quality method). Integrated in the

@@ -2,7 +2,7 @@
 //
 // What it computes: Is(nbhd) = (1/K) Σ_k max(0, Rv.L̂(θ_k))^m, the mean of the Phong lobe over K
 // directions of the visible segment around the most important point, K =
-// SpecularOptions::neighborhood_samples (MISSION.md "Linear light": "optionally refined by a
+// SpecularOptions::neighborhood_samples (docs/conventions.md "Radiometric definitions": "optionally refined by a
 // neighbourhood of samples whose size shrinks as m grows").
 //
 // Sources: Picott 1992, text after eq. 6 ("sampling a neighborhood around the optimal point whose

@@ -1,7 +1,7 @@
 // Linear light, specular term, the paper's most-important-point approximation.
 //
 // What it computes: Is(peak) = max over the visible t in [0,1] of max(0, Rv.L̂(t))^m
-// (Picott 1992 eq. 6-8, MISSION.md "Linear light"), for unit intensity.
+// (Picott 1992 eq. 6-8, docs/conventions.md "Radiometric definitions"), for unit intensity.
 //
 // Sources: Picott 1992 eq. 7-8 and the sidebar "Linear-light specular calculations". In the local
 // frame of linear_geometry.h, cos α(s) = Rv.L̂ = (ar + br s) / sqrt(h^2 + s^2) and

@@ -1,8 +1,8 @@
 // Linear (tube) light, diffuse, float batch: the closed forms for falloff n = 0, 1, 2 and 3 over
 // structure-of-arrays points.
 //
-// What it computes: Id = ∫_0^1 max(0, L(t).N) / |L(t)|^(n+1) dt (Picott 1992 eq. 4; MISSION.md
-// "Linear light"), the same quantity as linear_diffuse_closed.h, with the segment clipped to the
+// What it computes: Id = ∫_0^1 max(0, L(t).N) / |L(t)|^(n+1) dt (Picott 1992 eq. 4;
+// docs/conventions.md "Radiometric definitions"), the same quantity as linear_diffuse_closed.h, with the segment clipped to the
 // upper half space of P first (conventions.h).
 //
 // Sources and form: the scalar kernel's local frame (linear_geometry.h: L(s) = H + s u, |L|^2 =

@@ -27,6 +27,7 @@
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
 #include "gltf/gltf_scene.h"
+#include "mesh/mesh_file.h"
 
 namespace vlit::cli {
 namespace {

@@ -98,8 +98,8 @@ TEST_CASE("bad inputs: one error line naming the file, non-zero exit, no output"
     CHECK(r.err.find(junk.string() + ": not a valid glTF 2.0 file") != std::string::npos);
   }
   SUBCASE("index out of range (malformed corpus)") {
-    const std::string bad = std::string(VLIT_SHARED_DIR) + "/assets/bad-gltf/assimp/IndexOutOfRange/IndexOutOfRange.gltf";
-    if (!std::filesystem::exists(bad)) return;
+    const std::string bad = std::string(VLIT_ASSETS_DIR) + "/bad-gltf/assimp/IndexOutOfRange/IndexOutOfRange.gltf";
+    REQUIRE_MESSAGE(std::filesystem::exists(bad), "missing test data: " << bad);
     const auto r = run_command(kVlit + " bake " + q(bad) + " -o " + q(out));
     CHECK(r.exit_code == 1);
     CHECK(r.err.find(bad + ": ") != std::string::npos);
@@ -207,6 +207,17 @@ TEST_CASE("bake of a mesh file writes a new glTF with its light in COLOR_0") {
   CHECK_MESSAGE(rb.exit_code == 0, rb.err);
   CHECK(std::filesystem::exists(batch / "tri.glb"));
   CHECK(std::filesystem::exists(batch / "tri2.glb"));
+  // A directory of mesh files is a batch too (it was refused as holding no glTF).
+  const auto meshes = dir / "meshes";
+  std::filesystem::create_directories(meshes / "sub");
+  std::filesystem::copy_file(obj, meshes / "a.obj");
+  std::filesystem::copy_file(obj, meshes / "sub" / "b.obj");
+  const auto from_dir = dir / "from-dir";
+  const auto rd = run_command(kVlit + " bake " + q(meshes.string()) + " --lights " + q(lights.string()) + " -o " +
+                              q(from_dir.string()) + " -q");
+  CHECK_MESSAGE(rd.exit_code == 0, rd.err);
+  CHECK(std::filesystem::exists(from_dir / "a.glb"));
+  CHECK(std::filesystem::exists(from_dir / "sub" / "b.glb"));
 }
 
 TEST_CASE("--explain prints the plan and per-stage times") {

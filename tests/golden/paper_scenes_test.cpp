@@ -12,10 +12,7 @@ namespace fs = std::filesystem;
 
 TEST_CASE("assets/paper/ is reproduced byte for byte by vlit_make_paper_scenes") {
   const std::string generator = VLIT_PAPER_GENERATOR;
-  if (generator.empty()) {
-    MESSAGE("skipped: the build has no vlit_make_paper_scenes target (add_subdirectory(assets))");
-    return;
-  }
+  REQUIRE_MESSAGE(!generator.empty(), "the build has no vlit_make_paper_scenes target (add_subdirectory(assets))");
   const fs::path committed = fs::path(VLIT_SOURCE_DIR) / "assets" / "paper";
   const fs::path out = vlit::test::temp_dir("paper-scenes");
   const auto r = vlit::test::run_command("'" + generator + "' '" + out.string() + "'");

@@ -1,9 +1,14 @@
-// Shadowed lights against an independent shadow-ray reference, and the exact cases: fully
+// Shadowed lights against independent references (exact visibility with quadrature for the
+// area light, shadow rays for the linear one), and the exact cases: fully
 // hidden, half hidden by symmetry, watertight occluders, degenerate occluders.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "shadow_test_util.h"
 
@@ -24,9 +29,114 @@ std::vector<Tri> penumbra_occluders() {
   return tris;
 }
 
+// Diffuse and exact specular of the square light [-half, half]^2 at height zl (emitting down) at
+// a point below the occluders, with the visibility found exactly: every occluder triangle lies
+// between P and the light's plane, so its shadow on that plane is the triangle of its corners
+// projected from P. On each line y = const of the light the visible part is the light's chord
+// minus those triangles' chords (a union of intervals, exact); the integrand is smooth on each,
+// integrated by Gauss-Kronrod; the outer integral over y is split where the visible set changes
+// shape (projected corners, edge crossings, edges meeting x = +-half) and integrated the same
+// way. Agreement with the analytic unshadowed kernel is ~1e-14; a shadow-ray Monte Carlo
+// reference could only bound the error to ~1e-3.
+Response<double> square_light_reference(double half, double zl, const ReferencePoint& pt, const std::vector<Tri>& occluders) {
+  using boost::math::quadrature::gauss_kronrod;
+  struct P2 { double x, y; };
+  std::vector<std::array<P2, 3>> shadows;
+  for (const Tri& t : occluders) {
+    std::array<P2, 3> s{};
+    for (int k = 0; k < 3; ++k) {
+      const Vec3d d = t[k] - pt.p;
+      REQUIRE(d.z > 0);
+      REQUIRE(t[k].z < zl);
+      const double f = (zl - pt.p.z) / d.z;
+      s[k] = {pt.p.x + f * d.x, pt.p.y + f * d.y};
+    }
+    shadows.push_back(s);
+  }
+  // Breakpoints in y.
+  std::vector<double> ys{-half, half};
+  std::vector<std::pair<P2, P2>> edges;
+  for (const auto& s : shadows)
+    for (int k = 0; k < 3; ++k) edges.push_back({s[k], s[(k + 1) % 3]});
+  for (const auto& [a, b] : edges) {
+    ys.push_back(a.y);
+    for (double xb : {-half, half})
+      if ((a.x - xb) * (b.x - xb) < 0) ys.push_back(a.y + (xb - a.x) * (b.y - a.y) / (b.x - a.x));
+  }
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (std::size_t j = i + 1; j < edges.size(); ++j) {
+      const auto [a, b] = edges[i];
+      const auto [c, d] = edges[j];
+      const double den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
+      if (den == 0) continue;
+      const double t = ((c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x)) / den;
+      const double u = ((c.x - a.x) * (b.y - a.y) - (c.y - a.y) * (b.x - a.x)) / den;
+      if (t > 0 && t < 1 && u > 0 && u < 1) ys.push_back(a.y + t * (b.y - a.y));
+    }
+  std::sort(ys.begin(), ys.end());
+  ys.erase(std::remove_if(ys.begin(), ys.end(), [&](double y) { return y < -half || y > half; }), ys.end());
+  ys.erase(std::unique(ys.begin(), ys.end()), ys.end());
+
+  auto visible = [&](double y) {
+    std::vector<std::pair<double, double>> hidden;
+    for (const auto& s : shadows) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (int k = 0; k < 3; ++k) {
+        const P2 a = s[k], b = s[(k + 1) % 3];
+        if ((a.y - y) * (b.y - y) <= 0 && a.y != b.y) {
+          const double x = a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y);
+          lo = std::min(lo, x);
+          hi = std::max(hi, x);
+        }
+      }
+      if (lo < hi) hidden.push_back({lo, hi});
+    }
+    std::sort(hidden.begin(), hidden.end());
+    std::vector<std::pair<double, double>> open;
+    double x = -half;
+    for (const auto& [lo, hi] : hidden) {
+      if (lo > x) open.push_back({x, std::min(lo, half)});
+      x = std::max(x, hi);
+      if (x >= half) break;
+    }
+    if (x < half) open.push_back({x, half});
+    return open;
+  };
+  auto integrate = [&](bool specular) {
+    auto f = [&](double x, double y) {
+      const Vec3d w = Vec3d{x, y, zl} - pt.p;
+      const double r2 = length_squared(w);
+      const Vec3d wn = w / std::sqrt(r2);
+      const double cos_theta = dot(pt.n, wn), cos_l = wn.z;
+      if (!(cos_theta > 0)) return 0.0;
+      if (!specular) return cos_theta * cos_l / r2;
+      const double c = dot(pt.rv, wn);
+      return c > 0 ? std::pow(c, pt.m) * cos_l / r2 : 0.0;
+    };
+    auto row = [&](double y) {
+      double sum = 0;
+      for (const auto& [a, b] : visible(y))
+        if (b > a) sum += gauss_kronrod<double, 31>::integrate([&](double x) { return f(x, y); }, a, b, 10, 1e-14);
+      return sum;
+    };
+    double total = 0;
+    for (std::size_t i = 0; i + 1 < ys.size(); ++i)
+      if (ys[i + 1] > ys[i]) total += gauss_kronrod<double, 31>::integrate(row, ys[i], ys[i + 1], 10, 1e-13);
+    return total;
+  };
+  return {integrate(false), integrate(true)};
+}
+
+// Relative agreement required in the penumbra. Kernel and reference meet to 6e-16 here (-s
+// prints it; the Monte Carlo reference used before could only bound it to 1.2-2.7 %); the bar
+// leaves room for other compilers and the sanitizer build. The sliver test below, at this bar,
+// fails when pieces below 1e-4 of the light's area are dropped (kPieceAreaFloor 1e-12 -> 1e-4:
+// rel.err 2e-4); the three penumbra points alone have no piece that small.
+constexpr double kPenumbraBar = 1e-12;
+
 }  // namespace
 
-TEST_CASE("area light in a penumbra matches the dense shadow-ray reference (diffuse and exact specular)") {
+TEST_CASE("area light in a penumbra matches the exact-visibility quadrature reference (diffuse and exact specular)") {
   const std::vector<Vec3d> light = square_light(1.0, 2.0);
   const std::vector<Tri> tris = penumbra_occluders();
   const OccluderBvh bvh = make_bvh(tris);
@@ -34,17 +144,55 @@ TEST_CASE("area light in a penumbra matches the dense shadow-ray reference (diff
   const Vec3d points[] = {{0, 0, 0}, {0.4, -0.3, 0}, {-0.5, 0.6, 0.1}};
   int case_index = 0;
   for (const Vec3d& p : points) {
+    CAPTURE(case_index);
     const ShadingPoint<double> sp = point_up(p);
+    const ReferencePoint pt{sp.p, sp.n, sp.rv, sp.shininess};
     const Response<double> r = shade_shadowed(prepared, sp, options_with(SpecularMethod::kExact), bvh);
     const Response<double> open = shade(prepared, sp, options_with(SpecularMethod::kExact));
-    const auto ref = reference_area(light, {sp.p, sp.n, sp.rv, sp.shininess}, tris, 160, 1234u + case_index);
-    MESSAGE("point " << case_index << ": diffuse " << r.diffuse << " reference " << ref[0].value << " ± "
-                     << ref[0].standard_error << " (unshadowed " << open.diffuse << "); specular " << r.specular
-                     << " reference " << ref[1].value << " ± " << ref[1].standard_error);
-    CHECK(r.diffuse < open.diffuse);  // the occluders do hide part of the light
-    CHECK(std::abs(r.diffuse - ref[0].value) <= 4 * ref[0].standard_error);
-    CHECK(std::abs(r.specular - ref[1].value) <= 4 * ref[1].standard_error + 1e-9);
+    // The reference's own check: with nothing in the way it gives the unshadowed kernel.
+    const Response<double> ref_open = square_light_reference(1.0, 2.0, pt, {});
+    CHECK(std::abs(ref_open.diffuse - open.diffuse) <= 1e-11 * open.diffuse);
+    CHECK(std::abs(ref_open.specular - open.specular) <= 1e-11 * open.specular);
+    const Response<double> ref = square_light_reference(1.0, 2.0, pt, tris);
+    const double err_d = std::abs(r.diffuse - ref.diffuse) / ref.diffuse;
+    const double err_s = std::abs(r.specular - ref.specular) / ref.specular;
+    MESSAGE("point " << case_index << ": diffuse " << r.diffuse << " reference " << ref.diffuse << " rel.err " << err_d
+                     << " (unshadowed " << open.diffuse << "); specular " << r.specular << " reference " << ref.specular
+                     << " rel.err " << err_s);
+    CHECK(r.diffuse < 0.95 * open.diffuse);  // the occluders do hide part of the light
+    CHECK(err_d <= kPenumbraBar);
+    CHECK(err_s <= kPenumbraBar);
     ++case_index;
+  }
+}
+
+TEST_CASE("a thin visible sliver of an area light counts (strip and wedge 1e-4 wide next to a large hidden band)") {
+  // P at the origin, the light [-1, 1]^2 at height 2; an occluder at height 1 (shadow scaled by 2)
+  // hides the band from x = -0.6 to within 1e-4 of the light's edge x = 1. Visible: a wide part
+  // and a sliver of area 2e-4 (strip) or 1e-4 (wedge), which a piece-area floor of 1e-4 x the
+  // light's area would drop (a relative change of ~1e-4 of the result).
+  const std::vector<Vec3d> light = square_light(1.0, 2.0);
+  const PreparedLight<double> prepared = prepare_light<double>(area_source(light));
+  const ShadingPoint<double> sp = point_up({0, 0, 0});
+  const ReferencePoint pt{sp.p, sp.n, sp.rv, sp.shininess};
+  for (const double wedge : {0.0, 1.0}) {
+    CAPTURE(wedge);
+    std::vector<Tri> tris;
+    const double x0 = -0.3, x1 = 0.5 - 5e-5;  // shadow edge at x = 1 - 1e-4
+    const Vec3d a{x0, -0.8, 1}, b{wedge > 0 ? 0.5 : x1, -0.8, 1}, c{x1, 0.8, 1}, d{x0, 0.8, 1};
+    tris.push_back({a, b, c});
+    tris.push_back({a, c, d});
+    const Response<double> r = shade_shadowed(prepared, sp, options_with(SpecularMethod::kExact), make_bvh(tris));
+    const Response<double> ref = square_light_reference(1.0, 2.0, pt, tris);
+    // The sliver matters far beyond the bar: the same occluder reaching past the light's edge.
+    const Vec3d b2{0.51, -0.8, 1}, c2{0.51, 0.8, 1};
+    const Response<double> covered = square_light_reference(1.0, 2.0, pt, {{a, b2, c2}, {a, c2, d}});
+    CHECK((ref.diffuse - covered.diffuse) / ref.diffuse > 1e-5);
+    const double err_d = std::abs(r.diffuse - ref.diffuse) / ref.diffuse;
+    const double err_s = std::abs(r.specular - ref.specular) / ref.specular;
+    MESSAGE("diffuse " << r.diffuse << " reference " << ref.diffuse << " rel.err " << err_d << "; specular rel.err " << err_s);
+    CHECK(err_d <= kPenumbraBar);
+    CHECK(err_s <= kPenumbraBar);
   }
 }
 

@@ -247,7 +247,7 @@ TEST_CASE("emissive triangles: a square ring (a hole) falls back to its triangle
   CHECK(diffuse_at(s).x == doctest::Approx(centered_rect(4, 4, 1) - centered_rect(2, 2, 1)).epsilon(1e-6));
 }
 
-TEST_CASE("emissive geometry: a material with an emissive texture is not a light; the limit keeps the brightest") {
+TEST_CASE("emissive geometry: a material with an emissive texture is not a light, the limit keeps the brightest") {
   SUBCASE("emissive texture") {
     GltfBuilder b;
     add_receiver(b);
@@ -371,13 +371,10 @@ TEST_CASE("receivers on an emissive polygon's corner, edge or plane, or on an em
   }
 }
 
-TEST_CASE("real assets: Box under an EXT_lights_area rect equals LIGHTS.json; LightsPunctualLamp's textured emission is no light") {
-  const std::string shared = VLIT_SHARED_DIR;
-  if (!std::filesystem::exists(shared + "/assets/gltf/Box")) {
-    MESSAGE("../shared/assets not found; skipped");
-    return;
-  }
-  GltfFile box = load_gltf_file(shared + "/assets/gltf/Box/glTF/Box.gltf");
+TEST_CASE("real assets: Box under an EXT_lights_area rect equals LIGHTS.json, LightsPunctualLamp's textured emission is no light") {
+  const std::string samples = std::string(VLIT_ASSETS_DIR) + "/samples";
+  REQUIRE_MESSAGE(std::filesystem::exists(samples + "/Box/Box.gltf"), "missing test data: " << samples);
+  GltfFile box = load_gltf_file(samples + "/Box/Box.gltf");
   // A 1.5 x 1 rect 2 above the box's centre, turned to face down (-90 degrees about X), 5 nits.
   box.model.extensions["EXT_lights_area"] = obj({{"lights", arr({rect_light(5, 1, 1.5)})}});
   tinygltf::Node node;
@@ -404,7 +401,7 @@ TEST_CASE("real assets: Box under an EXT_lights_area rect equals LIGHTS.json; Li
   CHECK(lit > 0);
 
   warnings.clear();
-  const Scene lamp = build_scene(load_gltf_file(shared + "/assets/gltf/LightsPunctualLamp/glTF/LightsPunctualLamp.gltf"), warnings);
+  const Scene lamp = build_scene(load_gltf_file(samples + "/LightsPunctualLamp/LightsPunctualLamp.gltf"), warnings);
   CHECK(lamp.lights.size() == 5);  // its KHR_lights_punctual lights only
   CHECK(std::count_if(warnings.begin(), warnings.end(), [](const std::string& w) { return w.find("emission comes from a texture") != std::string::npos; }) == 2);
 }

@@ -135,18 +135,15 @@ TEST_CASE("bad input: index out of range, node cycle, non-triangle primitives") 
   }
 }
 
-TEST_CASE("real assets load: Box, its interleaved variant, the sparse sample") {
-  const std::string shared = VLIT_SHARED_DIR;
-  if (!std::filesystem::exists(shared + "/assets/gltf/Box")) {
-    MESSAGE("../shared/assets not found; skipped");
-    return;
-  }
+TEST_CASE("real assets load: Box and its interleaved variant") {
+  const std::string samples = std::string(VLIT_ASSETS_DIR) + "/samples";
+  REQUIRE_MESSAGE(std::filesystem::exists(samples + "/Box/Box.gltf"), "missing test data: " << samples);
   std::vector<std::string> warnings;
-  const Scene box = build_scene(load_gltf_file(shared + "/assets/gltf/Box/glTF/Box.gltf"), warnings);
+  const Scene box = build_scene(load_gltf_file(samples + "/Box/Box.gltf"), warnings);
   REQUIRE(box.primitives.size() == 1);
   CHECK(box.primitives[0].positions.size() == 24);
   CHECK(box.primitives[0].triangles.size() == 36);
-  const Scene inter = build_scene(load_gltf_file(shared + "/assets/gltf/BoxInterleaved/glTF/BoxInterleaved.gltf"), warnings);
+  const Scene inter = build_scene(load_gltf_file(samples + "/BoxInterleaved/BoxInterleaved.gltf"), warnings);
   REQUIRE(inter.primitives.size() == 1);
   // Same box, interleaved storage: same world-space vertices.
   for (std::size_t i = 0; i < 24; ++i) check_vec(inter.primitives[0].positions[i], box.primitives[0].positions[i]);

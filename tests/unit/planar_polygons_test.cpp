@@ -43,7 +43,7 @@ TEST_CASE("a 4 x 3 grid merges into one rectangle, counter-clockwise, collinear 
   CHECK(stats.regions == 1);
 }
 
-TEST_CASE("an L-shape is one non-convex hexagon; a hole or a pinch falls back to triangles") {
+TEST_CASE("an L-shape is one non-convex hexagon, a hole or a pinch falls back to triangles") {
   std::vector<Vec3d> p;
   std::vector<std::uint32_t> t;
   grid(2, 2, [](int i, int j) { return i == 1 && j == 1; }, p, t);  // L of 3 cells

@@ -7,14 +7,56 @@
 
 using namespace vlit;
 
+// 4 C E - 4 for C, E close to 1 (D = 2), exactly from the double inputs themselves: with
+// C = 1 + dc and E = 1 + de, dc and de are exact in double (Sterbenz: C - 1 has no rounding), and
+// 4 C E - 4 = 4 (dc + de) + 4 dc de. dc and de have at most 53 - 27 = 26 significant bits for
+// |dc|, |de| >= 2^-27 (fewer for the cases below), so dc + de and dc de are exact in long double's
+// 64-bit significand; the reference's only error is the final addition (relative 5e-20), where a
+// long double product 4 C * E would already be off by 2e-19 absolute (relative 3e-11 here).
+long double exact_4ce_minus_4(double c, double e) {
+  const long double dc = c - 1.0, de = e - 1.0;
+  return 4 * (dc + de) + 4 * (dc * de);
+}
+
+// The naive form, each product rounded to double on its own (volatile: no FMA contraction).
+double naive_difference_of_products(double a, double b, double c, double d) {
+  volatile double ab = a * b, cd = c * d;
+  return ab - cd;
+}
+
 TEST_CASE("difference_of_products keeps the digits that a*b - c*d loses") {
-  // 4CE - D^2 for a point almost collinear with a segment: C = E = 1 + eps, D = 2.
-  const double eps = 1e-9;
-  const double c = 1 + eps, e = 1 + eps, d = 2;
-  // Exact: 4(1+eps)^2 - 4 = 8 eps + 4 eps^2.
-  const double exact = 8 * eps + 4 * eps * eps;
+  // 4CE - D^2 for a point almost collinear with a segment: C = E = 1 + eps, D = 2. The input
+  // 1 + 1e-9 is itself rounded: C - 1 = 1.000000082740371e-9, so the value to compare against is
+  // 8 (C - 1) + 4 (C - 1)^2 with the rounded C, not 8e-9 + 4e-18 (which is 1e-7 away).
+  const double c = 1 + 1e-9, e = c, d = 2;
+  const long double exact = exact_4ce_minus_4(c, e);
+  CHECK(static_cast<double>(exact) != 8e-9 + 4e-18);  // the rounding of the input matters
   const double robust = difference_of_products(4 * c, e, d, d);
-  CHECK(std::abs(robust - exact) <= 1e-6 * exact);
+  const double naive = naive_difference_of_products(4 * c, e, d, d);
+  const double tol = 4 * std::numeric_limits<double>::epsilon();  // a few units in the last place
+  CHECK(std::abs(robust - exact) <= tol * std::abs(exact));
+  // The naive form drops 4 (C - 1)^2 (relative 5e-10): far outside the bar the FMA form meets.
+  CHECK(std::abs(naive - exact) > 1e5 * tol * std::abs(exact));
+
+  // C = 1 + 2^-30, E = 1 - 2^-30: 4CE - 4 = -4 * 2^-60 exactly; the naive form rounds 4CE to 4
+  // and returns 0, the FMA form returns the exact value.
+  const double c2 = 1 + std::ldexp(1.0, -30), e2 = 1 - std::ldexp(1.0, -30);
+  const long double exact2 = exact_4ce_minus_4(c2, e2);
+  CHECK(exact2 == -std::ldexp(1.0L, -58));
+  CHECK(difference_of_products(4 * c2, e2, d, d) == static_cast<double>(exact2));
+  CHECK(naive_difference_of_products(4 * c2, e2, d, d) == 0.0);
+
+  // A sweep of near-collinear inputs: C = 1 + k 2^-40, E = 1 + j 2^-41, every result within a few
+  // ulps of the exact one.
+  for (int k = 1; k <= 50; ++k)
+    for (int j = -50; j <= 50; ++j) {
+      const double ck = 1 + k * std::ldexp(1.0, -40), ej = 1 + j * std::ldexp(1.0, -41);
+      const long double x = exact_4ce_minus_4(ck, ej);
+      const double r = difference_of_products(4 * ck, ej, d, d);
+      CAPTURE(k);
+      CAPTURE(j);
+      CHECK(std::abs(r - x) <= tol * std::abs(x));
+    }
 }
 
 TEST_CASE("angle_between is accurate near 0 and pi where acos(dot) is not") {

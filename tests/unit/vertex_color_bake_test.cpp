@@ -79,7 +79,7 @@ TEST_CASE("one triangle under a point light: COLOR_0 = I cos / d^2 per vertex") 
   }
 }
 
-TEST_CASE("light above 1 is clipped in unorm formats and counted; float keeps it") {
+TEST_CASE("light above 1 is clipped in unorm formats and counted, float keeps it") {
   GltfBuilder b;
   b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}));
   BakeOptions u8;
@@ -212,7 +212,7 @@ TEST_CASE("--specular-eye: one triangle, specular folded into the multiplier by 
   CHECK(d[0] == doctest::Approx(0.5).epsilon(1e-6));
 }
 
-TEST_CASE("--specular-eye: a base colour channel of 0 cannot show specular; it is counted, not divided") {
+TEST_CASE("--specular-eye: a base colour channel of 0 cannot show specular, it is counted, not divided") {
   GltfBuilder b;
   const int mat = b.add_material({0.5, 0, 1, 1}, 0, 0.5);
   b.add_node(b.add_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 0, 0, 1, 0, 0, 1}, {0, 1, 2}, TINYGLTF_MODE_TRIANGLES, mat));

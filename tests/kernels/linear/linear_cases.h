@@ -14,7 +14,7 @@
 
 namespace vlit::linear_test {
 
-// Named stiff cases (MISSION.md "Known traps"; one TEST_CASE each in linear_stiff_test.cpp).
+// Named stiff cases (docs/linear-lights.md; one TEST_CASE each in linear_stiff_test.cpp).
 inline Config stiff_case(const std::string& name) {
   Config c;
   c.name = name;

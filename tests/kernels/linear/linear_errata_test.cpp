@@ -70,6 +70,10 @@ double rel(long double v, long double ref) { return double(std::fabs(v - ref) / 
 }  // namespace
 
 TEST_CASE("erratum E1: C and D depend on the shading point, only E = Ld.Ld is per light") {
+  // Two shading points under one light. The sidebar's C and D differ between them, E does not;
+  // vlit's kernel (shade_linear) must form C and D per point: at each point it meets the
+  // long-double reference, while the printed form evaluated with the other point's C and D (the
+  // per-light precomputation the paper suggests) misses it by far more than any kernel error.
   Config a = benign(), b = benign();
   b.p = {0.5, -0.2, 0.1};
   const Sidebar<double> sa = sidebar<double>(a), sb = sidebar<double>(b);
@@ -78,9 +82,25 @@ TEST_CASE("erratum E1: C and D depend on the shading point, only E = Ld.Ld is pe
   CHECK(sa.c != sb.c);
   CHECK(sa.d != sb.d);
   CHECK(sa.e == sb.e);
+  const Sidebar<long double> la = sidebar<long double>(a), lb = sidebar<long double>(b);
+  for (int n = 0; n <= 3; ++n) {
+    CAPTURE(n);
+    for (const Config* k : {&a, &b}) {
+      const auto t = typed<double>(*k, n);
+      const double kernel = shade_linear(t.light, t.sp, SpecularOptions{SpecularMethod::kNone}).diffuse;
+      CHECK(rel(kernel, ref_diffuse(t)) < 1e-13);
+    }
+    // P2 shaded with P1's C and D (A and B are P2's; n = 1 with the sign of E2 fixed).
+    Sidebar<long double> stale = lb;
+    stale.c = la.c;
+    stale.d = la.d;
+    const long double ref_b = ref_diffuse(typed<double>(b, n));
+    CHECK(rel(printed(n, lb, n == 1), ref_b) < 1e-13);  // both points are above the horizon
+    CHECK(rel(printed(n, stale, n == 1), ref_b) > 1e-2);
+  }
 }
 
-TEST_CASE("erratum E2: the printed n = 1 form has the sign of its log term flipped; n = 0, 2, 3 are right") {
+TEST_CASE("erratum E2: the printed n = 1 form has the sign of its log term flipped, n = 0, 2, 3 are right") {
   const Config c = benign();
   const Sidebar<long double> s = sidebar<long double>(c);
   for (int n = 0; n <= 3; ++n) {

@@ -1,4 +1,4 @@
-// One TEST_CASE per named stiff case (MISSION.md "Known traps"): every kernel in double and float
+// One TEST_CASE per named stiff case (docs/linear-lights.md): every kernel in double and float
 // against the long-double reference, every output finite.
 #include <doctest/doctest.h>
 

@@ -69,7 +69,7 @@ std::map<std::string, int> baked_per_key(const std::vector<std::string>& manifes
 
 }  // namespace
 
-TEST_CASE("batch: outputs keep the inputs' folders; same names in two folders do not collide") {
+TEST_CASE("batch: outputs keep the inputs' folders, same names in two folders do not collide") {
   const SmallBatch b = make_batch("cli-layout", 8);
   const auto out = b.dir / "out";
   const auto r = run_command(kVlit + " bake " + q(b.in) + " --lights " + q(b.lights) + " -o " + q(out));
@@ -172,7 +172,7 @@ TEST_CASE("--shard I/N: N shards bake every input exactly once, whatever the ord
   CHECK(bad.err.find("--shard: shard index 3 is not below the count 3") != std::string::npos);
 }
 
-TEST_CASE("--skip-existing bakes only what is missing or older than its input; the manifest says which") {
+TEST_CASE("--skip-existing bakes only what is missing or older than its input, the manifest says which") {
   const SmallBatch b = make_batch("cli-resume", 8);
   const auto out = b.dir / "out";
   const std::string bake = kVlit + " bake " + q(b.in) + " --lights " + q(b.lights) + " -o " + q(out);
@@ -202,7 +202,7 @@ TEST_CASE("--skip-existing bakes only what is missing or older than its input; t
   CHECK(relit.err.find("8 of 8 files baked") != std::string::npos);
 }
 
-TEST_CASE("--manifest records failures with their error; manifest-summary exits 1 and lists them") {
+TEST_CASE("--manifest records failures with their error, manifest-summary exits 1 and lists them") {
   const SmallBatch b = make_batch("cli-manifest", 4);
   std::ofstream(b.in / "broken.gltf") << "{ not json";
   const std::string manifest = (b.dir / "m.jsonl").string();
@@ -270,7 +270,7 @@ TEST_CASE("the batch progress line fits a narrow terminal: the path is shortened
   CHECK(r.out.find("...") != std::string::npos);  // the long path was shortened
 }
 
-TEST_CASE("a folder of mesh files is a batch; x.obj next to x.glb is a collision") {
+TEST_CASE("a folder of mesh files is a batch, x.obj next to x.glb is a collision") {
   const SmallBatch b = make_batch("cli-mesh-folder", 1);
   const fs::path meshes = b.dir / "meshes";
   fs::create_directories(meshes / "sub");

@@ -27,7 +27,7 @@ std::string buffer_view_bytes(const tinygltf::Model& model, int view_index) {
 
 }  // namespace
 
-TEST_CASE(".glb output embeds the input's image files; --keep-image-links keeps links") {
+TEST_CASE(".glb output embeds the input's image files, --keep-image-links keeps links") {
   const fs::path dir = vlit::test::temp_dir("cli-glb-images");
   fs::create_directories(dir / "in/tex");
   fs::create_directories(dir / "out");

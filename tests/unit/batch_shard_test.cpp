@@ -145,7 +145,7 @@ TEST_CASE("--shard auto: Slurm job arrays, minus SLURM_ARRAY_TASK_MIN, divided b
   CHECK_THROWS_AS(shard_from_environment(environment({{"SLURM_ARRAY_TASK_ID", "2"}})), InputError);
 }
 
-TEST_CASE("--shard auto: Kubernetes and GNU parallel need VLIT_SHARD_COUNT; VLIT_SHARD_INDEX wins") {
+TEST_CASE("--shard auto: Kubernetes and GNU parallel need VLIT_SHARD_COUNT, VLIT_SHARD_INDEX wins") {
   CHECK(shard_from_environment(environment({{"JOB_COMPLETION_INDEX", "5"}, {"VLIT_SHARD_COUNT", "8"}})).shard.text() == "5/8");
   try {
     shard_from_environment(environment({{"JOB_COMPLETION_INDEX", "5"}}));

@@ -59,7 +59,7 @@ TEST_CASE("a bad manifest line is an error naming the file and line") {
   CHECK_THROWS_AS(parse_manifest_line(R"({"input":"a","status":"baked","vertices":-3})", "m", 1), InputError);
 }
 
-TEST_CASE("the writer appends whole lines; a re-run adds to the same file") {
+TEST_CASE("the writer appends whole lines, a re-run adds to the same file") {
   const auto dir = vlit::test::temp_dir("manifest-append");
   const auto path = (dir / "m.jsonl").string();
   {
@@ -77,7 +77,7 @@ TEST_CASE("the writer appends whole lines; a re-run adds to the same file") {
   CHECK_THROWS_AS(ManifestWriter((dir / "no/such/dir/m.jsonl").string()), InputError);
 }
 
-TEST_CASE("summary: the latest record of each input counts; double bakes and silent shards are reported") {
+TEST_CASE("summary: the latest record of each input counts, double bakes and silent shards are reported") {
   const std::vector<ManifestRecord> records = {
       record("a", "baked", "2026-01-01T00:00:01.000Z", "0/3"),
       record("b", "failed", "2026-01-01T00:00:02.000Z", "1/3"),

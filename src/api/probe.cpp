@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "api/api_internal.h"
-#include "shadow/shadowed_light.h"
+#include "shadow/light_meter.h"
 
 namespace vlit {
 namespace {
@@ -27,18 +27,7 @@ std::vector<ProbeValue> probe_points(const std::vector<SurfacePoint>& points, co
       const ShadingPoint<T> sp = make_shading_point(static_cast<Vec3<T>>(api::to_vec3d(p.position)),
                                                     static_cast<Vec3<T>>(api::to_vec3d(p.normal)),
                                                     static_cast<Vec3<T>>(api::to_vec3d(p.eye)), T(p.shininess));
-      double diffuse = 0, specular = 0;
-      for (std::size_t l = 0; l < lights.size(); ++l) {
-        Response<T> r;
-        if constexpr (std::is_same_v<T, double>) {
-          r = occluders && sources[l].casts_shadows ? shade_shadowed(lights[l], sp, options, *occluders)
-                                                    : shade(lights[l], sp, options);
-        } else {
-          r = shade(lights[l], sp, options);
-        }
-        diffuse += sources[l].intensity * static_cast<double>(r.diffuse);
-        specular += sources[l].intensity * static_cast<double>(r.specular);
-      }
+      const auto [diffuse, specular] = light_meter(lights, sources, sp, options, occluders);
       out[begin + i] = {diffuse, specular};
     }
     if (settings.progress) settings.progress(begin + count, points.size());

@@ -5,34 +5,14 @@
 
 #include "api/api_internal.h"
 #include "bake/light_vertices.h"
+#include "bake/lit_draw_mesh.h"
 #include "gltf/gltf_file.h"
 #include "raster/raster.h"
+#include "raster/scene_camera.h"
 #include "scene/material.h"
 
 namespace vlit {
 namespace {
-
-raster::Camera camera_of(const Vec3d& position, const Vec3d& right, const Vec3d& up, const Vec3d& back) {
-  raster::Camera out;
-  Mat4d m = Mat4d::identity();
-  const Vec3d cols[4] = {right, up, back, position};
-  for (int col = 0; col < 4; ++col)
-    for (int row = 0; row < 3; ++row) m.m[row][col] = cols[col][row];
-  out.world_from_camera = m;
-  return out;
-}
-
-raster::Camera camera_of(const SceneCamera& c) {
-  raster::Camera out = camera_of(c.position, c.right, c.up, c.back);
-  out.orthographic = c.orthographic;
-  out.yfov = c.yfov;
-  out.aspect = c.aspect;
-  out.xmag = c.xmag;
-  out.ymag = c.ymag;
-  out.znear = c.znear;
-  out.zfar = c.zfar;
-  return out;
-}
 
 // A look-at camera; throws Error(input, ...) when eye = target or up is parallel to the view.
 raster::Camera camera_of(const View& view, const std::string& input) {
@@ -46,7 +26,7 @@ raster::Camera camera_of(const View& view, const std::string& input) {
   if (!(side_length > 1e-12) || !std::isfinite(side_length))
     throw Error(input, "up must not be parallel to the view direction", "settings.view.up");
   const Vec3d right = side / side_length;
-  raster::Camera camera = camera_of(eye, right, cross(back, right), back);
+  raster::Camera camera = raster::camera_from_frame(eye, right, cross(back, right), back);
   camera.yfov = view.yfov;
   camera.znear = std::max(1e-4 * distance, 1e-6);
   return camera;
@@ -68,7 +48,7 @@ Image render_scene(Scene& scene, const Lights& lights, const RenderSettings& set
     for (const auto& v : p.positions) { lo = min(lo, v); hi = max(hi, v); }
   const double aspect = static_cast<double>(settings.width) / settings.height;
   raster::Camera camera = settings.view   ? camera_of(*settings.view, input)
-                          : scene.camera ? camera_of(*scene.camera)
+                          : scene.camera ? raster::camera_from_scene(*scene.camera)
                                          : raster::frame_bounds(lo, hi, aspect);
   if (const std::string problem = raster::validate_camera(camera); !problem.empty()) {
     if (settings.view) throw Error(input, "camera unusable: " + problem, "settings.view");
@@ -88,20 +68,7 @@ Image render_scene(Scene& scene, const Lights& lights, const RenderSettings& set
   std::vector<raster::DrawMesh> meshes;
   for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
     ScenePrimitive& prim = scene.primitives[i];
-    const Material& material = scene.material_of(prim);
-    const PhongMaterial phong = phong_from_metallic_roughness(material);
-    raster::DrawMesh mesh;
-    mesh.double_sided = material.double_sided;
-    mesh.indices = std::move(prim.triangles);
-    mesh.positions.reserve(prim.positions.size());
-    mesh.colors.reserve(prim.positions.size());
-    for (std::size_t v = 0; v < prim.positions.size(); ++v) {
-      mesh.positions.push_back(static_cast<Vec3f>(prim.positions[v]));
-      Vec3d color = hadamard(phong.kd, static_cast<Vec3d>(light[i].diffuse[v]));
-      if (!light[i].specular.empty()) color += hadamard(phong.ks, static_cast<Vec3d>(light[i].specular[v]));
-      mesh.colors.push_back(static_cast<Vec3f>(color));
-    }
-    meshes.push_back(std::move(mesh));
+    meshes.push_back(lit_draw_mesh(prim, scene.material_of(prim), light[i], std::move(prim.triangles)));
   }
   raster::Image image = raster::render(meshes, camera, options);
   Image out;

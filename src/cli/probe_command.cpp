@@ -14,7 +14,7 @@
 #include "io/points_csv.h"
 #include "scene/load_scene.h"
 #include "shading/prepared_light.h"
-#include "shadow/shadowed_light.h"
+#include "shadow/light_meter.h"
 
 namespace vlit::cli {
 namespace {
@@ -36,18 +36,7 @@ void probe(const std::vector<LightSource>& sources, const std::vector<ProbePoint
     const ProbePoint& p = points[i];
     const ShadingPoint<T> sp = make_shading_point(static_cast<Vec3<T>>(p.position), static_cast<Vec3<T>>(p.normal),
                                                   static_cast<Vec3<T>>(p.eye), T(p.shininess));
-    double diffuse = 0, specular = 0;
-    for (std::size_t l = 0; l < lights.size(); ++l) {
-      Response<T> r;
-      if constexpr (std::is_same_v<T, double>) {
-        r = occluders && sources[l].casts_shadows ? shade_shadowed(lights[l], sp, options, *occluders)
-                                                  : shade(lights[l], sp, options);
-      } else {
-        r = shade(lights[l], sp, options);
-      }
-      diffuse += sources[l].intensity * static_cast<double>(r.diffuse);
-      specular += sources[l].intensity * static_cast<double>(r.specular);
-    }
+    const auto [diffuse, specular] = light_meter(lights, sources, sp, options, occluders);
     std::printf("%zu,%.17g,%.17g\n", i, diffuse, specular);
   }
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "bake/light_vertices.h"
+#include "bake/lit_draw_mesh.h"
 #include "cli/commands.h"
 #include "cli/openmp_wait_policy.h"
 #include "cli/specular_option.h"
@@ -13,6 +14,7 @@
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
 #include "raster/raster.h"
+#include "raster/scene_camera.h"
 #include "scene/load_scene.h"
 
 namespace vlit::cli {
@@ -35,23 +37,6 @@ struct RenderArgs {
   std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
 };
-
-raster::Camera to_raster_camera(const SceneCamera& c) {
-  raster::Camera out;
-  Mat4d m = Mat4d::identity();
-  const Vec3d cols[4] = {c.right, c.up, c.back, c.position};
-  for (int col = 0; col < 4; ++col)
-    for (int row = 0; row < 3; ++row) m.m[row][col] = cols[col][row];
-  out.world_from_camera = m;
-  out.orthographic = c.orthographic;
-  out.yfov = c.yfov;
-  out.aspect = c.aspect;
-  out.xmag = c.xmag;
-  out.ymag = c.ymag;
-  out.znear = c.znear;
-  out.zfar = c.zfar;
-  return out;
-}
 
 // The normals debug view's colour of a world-space normal: 0.5 n + 0.5 per channel, written to the
 // PNG as is (no sRGB OETF): +X = (255, 128, 128), -X = (0, 128, 128), +Y = (128, 255, 128)...
@@ -110,7 +95,7 @@ int run_render(const RenderArgs& args) {
   for (const auto& p : scene.primitives)
     for (const auto& v : p.positions) { lo = min(lo, v); hi = max(hi, v); }
   const double aspect = static_cast<double>(args.width) / args.height;
-  raster::Camera camera = scene.camera ? to_raster_camera(*scene.camera) : raster::frame_bounds(lo, hi, aspect);
+  raster::Camera camera = scene.camera ? raster::camera_from_scene(*scene.camera) : raster::frame_bounds(lo, hi, aspect);
   if (const std::string problem = raster::validate_camera(camera); !problem.empty()) {
     print_warning(args.input + ": camera unusable (" + problem + "); framing the scene instead");
     camera = raster::frame_bounds(lo, hi, aspect);
@@ -137,20 +122,8 @@ int run_render(const RenderArgs& args) {
     progress.finish();
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
       const ScenePrimitive& prim = scene.primitives[i];
-      const Material& material = scene.material_of(prim);
-      const PhongMaterial phong = phong_from_metallic_roughness(material);
-      raster::DrawMesh mesh;
-      mesh.double_sided = material.double_sided;
-      mesh.indices = std::move(loaded.scene.primitives[i].triangles);  // not needed by the scene any more
-      mesh.positions.reserve(prim.positions.size());
-      mesh.colors.reserve(prim.positions.size());
-      for (std::size_t v = 0; v < prim.positions.size(); ++v) {
-        mesh.positions.push_back(static_cast<Vec3f>(prim.positions[v]));
-        Vec3d color = hadamard(phong.kd, static_cast<Vec3d>(light[i].diffuse[v]));
-        if (!light[i].specular.empty()) color += hadamard(phong.ks, static_cast<Vec3d>(light[i].specular[v]));
-        mesh.colors.push_back(static_cast<Vec3f>(color));
-      }
-      meshes.push_back(std::move(mesh));
+      // The triangles are not needed by the scene any more: moved into the mesh.
+      meshes.push_back(lit_draw_mesh(prim, scene.material_of(prim), light[i], std::move(loaded.scene.primitives[i].triangles)));
     }
   }
   // The scene's geometry is not needed any more: free it before rasterizing, where a large render

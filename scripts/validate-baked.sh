@@ -18,8 +18,20 @@ $vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/stud
 # with and without specular folded in.
 $vlit bake assets/examples/file-lights.glb -o "$out/file-lights.glb" -q
 $vlit bake assets/examples/file-lights.glb -o "$out/file-lights-specular.gltf" --specular-eye 0,1.6,5.5 --specular exact -q
+# The vendored samples come without their texture images (assets/samples/LICENSES.md): each is
+# baked from a copy where every image it names and lacks is a 1 x 1 PNG, so that the input, and
+# the .glb that embeds its images, is a valid glTF.
+png_1x1='\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR\x00\x00\x00\x01\x00\x00\x00\x01\x08\x02\x00\x00\x00\x90wS\xde\x00\x00\x00\x0cIDATx\x9cc\xf8\xff\xff?\x00\x05\xfe\x02\xfe\xa75\x81\x84\x00\x00\x00\x00IEND\xaeB`\x82'
 for f in assets/samples/*/*.gltf; do
-  $vlit bake "$f" --lights assets/demo/lights.json -o "$out/$(basename "${f%.*}").glb" -q
+  name=$(basename "${f%.*}")
+  copy="$out/samples/$name"
+  mkdir -p "$copy"
+  cp "$(dirname "$f")"/* "$copy/"
+  node -e 'for (const i of JSON.parse(require("fs").readFileSync(process.argv[1])).images || []) if (i.uri) console.log(decodeURIComponent(i.uri))' "$copy/$name.gltf" |
+    while IFS= read -r image; do
+      [[ -e "$copy/$image" ]] || printf "$png_1x1" > "$copy/$image"
+    done
+  $vlit bake "$copy/$name.gltf" --lights assets/demo/lights.json -o "$out/$name.glb" -q
 done
 extra=${VLIT_EXTRA_ASSETS:-}/gltf
 if [[ -n ${VLIT_EXTRA_ASSETS:-} && -d $extra ]]; then

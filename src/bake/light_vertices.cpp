@@ -34,26 +34,6 @@ void accumulate_light(const PreparedLight<double>& light, const ShadeOptions& op
       light.kernel);
 }
 
-// A shadowed pair costs up to milliseconds per vertex (docs/shadows.md), so its chunk is cut into
-// blocks of kShadowBlock vertices handed to the threads one at a time, and no block starts once
-// `cancel` is set: Ctrl-C is answered within one block on one thread, not after the chunk. The
-// nested parallel loop of accumulate_light_shadowed runs on a team of one (OpenMP's default of one
-// active level). Each vertex is computed as before, so results do not change.
-void accumulate_light_shadowed_cancellable(const PreparedLight<double>& light, const ShadeOptions& options,
-                                           const ShadingPoint<double>* points, long count, Vec3d* diffuse,
-                                           Vec3d* specular, const OccluderBvh& occluders,
-                                           const std::atomic<bool>* cancel) {
-  constexpr long kShadowBlock = 8;
-  const long blocks = (count + kShadowBlock - 1) / kShadowBlock;
-#pragma omp parallel for schedule(dynamic, 1)
-  for (long b = 0; b < blocks; ++b) {
-    if (cancel && cancel->load(std::memory_order_relaxed)) continue;
-    const long begin = b * kShadowBlock, n = std::min(kShadowBlock, count - begin);
-    accumulate_light_shadowed(light, options, points + begin, n, diffuse + begin, specular ? specular + begin : nullptr,
-                              occluders);
-  }
-}
-
 // Double light to the float output, saturating at the largest float so an over-lit vertex stays
 // the brightest rather than becoming Inf (and later black in an encoder that drops non-finite
 // values). Inputs are finite and >= 0 by construction of the kernels.
@@ -129,8 +109,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         const PreparedLight<double>& light = plan.lights[lights_here[k]];
         Vec3d* spec_out = options.with_specular ? specular.data() : nullptr;
         if (shadowed(k))
-          accumulate_light_shadowed_cancellable(light, options, points.data(), count, diffuse.data(), spec_out,
-                                                *occluders, request.cancel);
+          accumulate_light_shadowed(light, options, points.data(), count, diffuse.data(), spec_out, *occluders,
+                                    request.cancel);
         else if (!plan.batch_of_light[lights_here[k]].light)
           accumulate_light(light, options, points.data(), count, diffuse.data(), spec_out);
       }

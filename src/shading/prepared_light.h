@@ -30,6 +30,10 @@ struct ShadeOptions {
   SpecularOptions specular;
   LinearDiffuseOptions linear;
   AreaShadowMethod area_shadows = AreaShadowMethod::kSilhouette;
+  // The vertex loop searches the occluders once per cluster of neighbouring vertices
+  // (src/shadow/silhouette_cluster.h) instead of once per vertex; same results. Off: the
+  // benchmarks' baseline.
+  bool shadow_clusters = true;
 };
 
 template <class T>

@@ -4,13 +4,11 @@
 #include <cmath>
 
 #include "core/robust_math.h"
+#include "shadow/silhouette_cluster.h"
 
 namespace vlit {
 namespace {
 
-// R is the light's bounding rectangle grown by this fraction of its size (plus a floor), so that
-// L's edges never lie on R's sides.
-constexpr double kRectangleGrowth = 0.01171875;  // 3/256
 // A shadow ray whose crossing lies within this fraction of a triangle's edge (in barycentric
 // terms) or of the slab's planes is not counted: another point is tried.
 constexpr double kRayAmbiguity = 1e-9;
@@ -97,54 +95,75 @@ int facing_of(const OccluderTriangles& triangles, std::uint32_t t, const Vec3d& 
   return f;
 }
 
+// Edge e of the occluders, clipped to the slab, as a silhouette segment of the given weight.
+void add_edge(const Frame& f, const OccluderEdges& edges, std::uint32_t e, int weight, AreaSilhouetteScratch& s) {
+  const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
+  const Vec3d& a = edges.endpoints[e][0];
+  const Vec3d& b = edges.endpoints[e][1];
+  ClippedPoint ca{a}, cb{b};
+  for (const HalfSpace& h : slab) {
+    const double sa = h.signed_distance(a), sb = h.signed_distance(b);
+    if (sa < 0 && sb < 0) return;
+    if (sa < 0) ca.x = a + (b - a) * (sa / (sa - sb));
+    if (sb < 0) cb.x = a + (b - a) * (sa / (sa - sb));
+  }
+  add_segment(f, ca, cb, weight, s.segments);
+}
+
+// The weight of edge e seen from P: the facings of its triangles, each signed by its direction.
+int edge_weight(const OccluderBvh& occluders, std::uint32_t e, const Vec3d& p, AreaSilhouetteScratch& s) {
+  const OccluderEdges& edges = occluders.edges();
+  int weight = 0;
+  for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
+    const std::uint32_t code = edges.incident[k];
+    weight += facing_of(occluders.triangles(), code / 3, p, s) * edges.direction_of[code / 3][code % 3];
+  }
+  return weight;
+}
+
+// Chords: where triangle t (facing ft, not 0) leaves the slab through one of its planes, the kept
+// part is closed along the plane from the exit point to the entry point.
+void add_chords(const Frame& f, const std::array<Vec3d, 3>& c, int ft, AreaSilhouetteScratch& s) {
+  for (const HalfSpace& h : {f.slab.beyond_light, f.slab.before_p}) {
+    const double d[3] = {h.signed_distance(c[0]), h.signed_distance(c[1]), h.signed_distance(c[2])};
+    const bool in[3] = {d[0] >= 0, d[1] >= 0, d[2] >= 0};
+    if (in[0] == in[1] && in[1] == in[2]) continue;
+    ClippedPoint exit, entry;
+    for (int j = 0; j < 3; ++j) {
+      const int k = (j + 1) % 3;
+      if (in[j] && !in[k]) exit.x = crossing(c[j], c[k], h);
+      if (!in[j] && in[k]) entry.x = crossing(c[j], c[k], h);
+    }
+    add_segment(f, exit, entry, ft, s.segments);
+  }
+}
+
 // The silhouette segments of the candidates: weighted edges, and chords where a triangle leaves
-// the slab.
-void collect_silhouette(const Frame& f, const OccluderBvh& occluders, AreaSilhouetteScratch& s) {
+// the slab. With a cluster (silhouette_cluster.h), the facings and edge weights that are the same
+// from all of its points are taken from it.
+void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const SilhouetteCluster* cluster,
+                        AreaSilhouetteScratch& s) {
   const OccluderTriangles& triangles = occluders.triangles();
   const OccluderEdges& edges = occluders.edges();
-  const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
+  constexpr int kVariable = SilhouetteCluster::kVariable;
   for (std::uint32_t t : s.candidates) {
     // A candidate that hides nothing itself (it touches P, is a culled back face, a needle) still
     // weighs its edges: its neighbours may lie in subtrees the search skipped.
-    const int ft = facing_of(triangles, t, f.p, s);
-    const auto& c = triangles.corners[t];
+    // The cluster classified its candidates and their edge neighbours (stamped); a triangle its
+    // search left out (near P's volume by the corner test but not near the cluster's) is
+    // weighed here.
+    const bool known = cluster && cluster->facing_stamp[t] == cluster->stamp;
+    const int fixed_facing = known ? cluster->facing[t] : kVariable;
+    const int ft = fixed_facing == kVariable ? facing_of(triangles, t, f.p, s) : fixed_facing;
     for (int j = 0; j < 3; ++j) {
       const std::uint32_t e = edges.edge_of[t][j];
       if (s.edge_stamp[e] == s.stamp) continue;
       s.edge_stamp[e] = s.stamp;
-      int weight = 0;
-      for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
-        const std::uint32_t code = edges.incident[k];
-        weight += facing_of(triangles, code / 3, f.p, s) * edges.direction_of[code / 3][code % 3];
-      }
-      if (weight == 0) continue;
-      const Vec3d& a = edges.endpoints[e][0];
-      const Vec3d& b = edges.endpoints[e][1];
-      ClippedPoint ca{a}, cb{b};
-      bool empty = false;
-      for (const HalfSpace& h : slab) {
-        const double sa = h.signed_distance(a), sb = h.signed_distance(b);
-        if (sa < 0 && sb < 0) { empty = true; break; }
-        if (sa < 0) ca.x = a + (b - a) * (sa / (sa - sb));
-        if (sb < 0) cb.x = a + (b - a) * (sa / (sa - sb));
-      }
-      if (!empty) add_segment(f, ca, cb, weight, s.segments);
+      const int fixed = cluster && cluster->edge_stamp[e] == cluster->stamp ? cluster->edge_weight[e] : kVariable;
+      const int weight = fixed == kVariable ? edge_weight(occluders, e, f.p, s) : fixed;
+      if (weight != 0) add_edge(f, edges, e, weight, s);
     }
-    // Chords: where the triangle's boundary leaves the slab through one of its planes, the kept
-    // part is closed along the plane from the exit point to the entry point.
-    for (const HalfSpace& h : slab) {
-      if (ft == 0) break;
-      const double d[3] = {h.signed_distance(c[0]), h.signed_distance(c[1]), h.signed_distance(c[2])};
-      const bool in[3] = {d[0] >= 0, d[1] >= 0, d[2] >= 0};
-      if (in[0] == in[1] && in[1] == in[2]) continue;
-      ClippedPoint exit, entry;
-      for (int j = 0; j < 3; ++j) {
-        const int k = (j + 1) % 3;
-        if (in[j] && !in[k]) exit.x = crossing(c[j], c[k], h);
-        if (!in[j] && in[k]) entry.x = crossing(c[j], c[k], h);
-      }
-      add_segment(f, exit, entry, ft, s.segments);
-    }
+    if (ft != 0) add_chords(f, triangles.corners[t], ft, s);
   }
 }
 
@@ -218,7 +237,8 @@ double u_at(const SilhouetteSegment& s, double v) {  // s stored with v0 <= v1
 SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>& light,
                                                  const AreaView<double>& view,
                                                  const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
-                                                 const OccluderBvh& occluders, AreaSilhouetteScratch& s) {
+                                                 const OccluderBvh& occluders, AreaSilhouetteScratch& s,
+                                                 const SilhouetteCluster* cluster) {
   ++s.queries;
   Frame f;
   f.p = p;
@@ -230,13 +250,17 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   f.foot_u = dot(view.u, -view.D);
   f.foot_v = dot(view.v, -view.D);
   const Rect2 tight = light_rectangle(view, horizon_clipped);
-  const double grow = kRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light.radius});
+  const double grow = kSilhouetteRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light.radius});
   f.rect = {tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
   f.slab = area_slab(light, view, p);
 
+  const Aabb* b = cluster ? &cluster->box : nullptr;
+  const bool clustered = b && cluster->state != SilhouetteCluster::State::kPerVertex && p.x >= b->lo.x &&
+                         p.x <= b->hi.x && p.y >= b->lo.y && p.y <= b->hi.y && p.z >= b->lo.z && p.z <= b->hi.z;
   const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
-  occluders.silhouette_candidates(volume, slab, 2, p, s.candidates);
+  if (clustered) occluders.silhouette_candidates_in(cluster->leaves, volume, slab, 2, p, s.candidates);
+  else occluders.silhouette_candidates(volume, slab, 2, p, s.candidates);
   // The pyramid's sides, inward, in the order bottom, right, top, left (project() relies on it).
   const Vec3d corner[4] = {f.center + f.u * f.rect.x0 + f.v * f.rect.y0, f.center + f.u * f.rect.x1 + f.v * f.rect.y0,
                            f.center + f.u * f.rect.x1 + f.v * f.rect.y1, f.center + f.u * f.rect.x0 + f.v * f.rect.y1};
@@ -260,7 +284,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     s.stamp = 1;
   }
   s.segments.clear();
-  collect_silhouette(f, occluders, s);
+  collect_silhouette(f, occluders, clustered ? cluster : nullptr, s);
   s.silhouette_segments += static_cast<long>(s.segments.size());
   LightPieces& pieces = s.pieces;
   pieces.clear();

@@ -26,6 +26,8 @@
 //  4. The trapezoids with t = 0 are the visible pieces; vertically adjacent ones between the
 //     same two segments are merged. The kernels run on them as on the pieces of
 //     visible_area_pieces.
+// With a cluster (silhouette_cluster.h) that holds P, the silhouette comes from the cluster's
+// lists instead of a search of the BVH.
 // Checks: t >= 0 everywhere and t >= 1 outside L; when one fails (or no shadow ray could be
 // counted) the answer is kUndecided and the caller uses visible_area_pieces, the triangle-by-
 // triangle cutting, which is also the reference of the tests (tests/shadow/silhouette_test.cpp).
@@ -37,6 +39,12 @@
 #include "shadow/area_visibility.h"
 
 namespace vlit {
+
+struct SilhouetteCluster;
+
+// The rectangle R is the light's bounding rectangle grown by this fraction of its size (plus a
+// floor), so that L's edges never lie on R's sides.
+inline constexpr double kSilhouetteRectangleGrowth = 0.01171875;  // 3/256
 
 struct SilhouetteSegment {
   double u0, v0, u1, v1;  // as oriented: from (u0, v0) to (u1, v1)
@@ -71,6 +79,7 @@ enum class SilhouetteVisibility {
 SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>& light,
                                                  const AreaView<double>& view,
                                                  const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
-                                                 const OccluderBvh& occluders, AreaSilhouetteScratch& scratch);
+                                                 const OccluderBvh& occluders, AreaSilhouetteScratch& scratch,
+                                                 const SilhouetteCluster* cluster = nullptr);
 
 }  // namespace vlit

@@ -199,14 +199,16 @@ void OccluderBvh::build_cones() {
 // Every triangle of the subtree and every edge neighbour of them faces p the same way (strictly,
 // with a margin far above the rounding of the facing test). The facing of a triangle is the sign
 // of n.(p - x) for any x of its plane; a neighbour's plane passes through the shared edge, which
-// lies in the subtree's box, so bounding the directions from the box to p bounds them all.
-bool OccluderBvh::faces_uniformly(std::uint32_t node, const Vec3d& p) const {
+// lies in the subtree's box, so bounding the directions from the box to p bounds them all. With
+// p_radius > 0 the same holds for every point of the ball of that radius around p: the directions
+// from the box to the ball lie within the angle that the two spheres' radii subtend together.
+bool OccluderBvh::faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const {
   const NormalCone& cone = cones_[node];
   if (cone.open || !(cone.half_angle < M_PI / 2)) return false;
   const Aabb& box = nodes_[node].box;
   const Vec3d to_p = p - box.center();
   const double distance = length(to_p);
-  const double radius = 0.5 * length(box.hi - box.lo);
+  const double radius = 0.5 * length(box.hi - box.lo) + p_radius;
   if (!(distance > radius * (1 + 1e-6))) return false;
   // Angles alpha (axis to p), theta (the cone), phi (the box seen from p) combined through their
   // cosines and sines: all face p when alpha + theta + phi < pi/2 - margin, all face away when
@@ -292,36 +294,77 @@ void OccluderBvh::triangles_in_volume(const ConvexVolume& volume, const Vec3d& s
       if (test(i)) out.push_back(i);
     return;
   }
-  visit_volume(volume, [](std::uint32_t) { return false; }, [&](std::uint32_t tri) {
-    if (test(tri)) out.push_back(tri);
+  visit_volume(volume, [](std::uint32_t) { return false; }, [&](std::uint32_t node) {
+    for (std::uint32_t i = nodes_[node].first; i < nodes_[node].first + nodes_[node].count; ++i)
+      if (test(order_[i])) out.push_back(order_[i]);
   });
   std::sort(out.begin(), out.end());
 }
 
+bool OccluderBvh::near_volume(std::uint32_t tri, const ConvexVolume& volume) const {
+  const auto& c = triangles_.corners[tri];
+  for (const HalfSpace& h : volume.planes)
+    if (h.signed_distance(c[0]) < 0 && h.signed_distance(c[1]) < 0 && h.signed_distance(c[2]) < 0) return false;
+  return box_of(c).overlaps(volume.box);
+}
+
 void OccluderBvh::silhouette_candidates(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
-                                        const Vec3d& p, std::vector<std::uint32_t>& out) const {
+                                        const Vec3d& p, std::vector<std::uint32_t>& out, double p_radius) const {
   out.clear();
-  auto near = [&](std::uint32_t tri) {
-    const auto& c = triangles_.corners[tri];
-    for (const HalfSpace& h : volume.planes)
-      if (h.signed_distance(c[0]) < 0 && h.signed_distance(c[1]) < 0 && h.signed_distance(c[2]) < 0) return false;
-    return box_of(c).overlaps(volume.box);
-  };
   if (brute_force_ || nodes_.empty()) {
     for (std::uint32_t i = 0; i < triangles_.size(); ++i)
-      if (near(i)) out.push_back(i);
+      if (near_volume(i, volume)) out.push_back(i);
     return;
   }
   // A subtree that faces p uniformly and that no plane of `inside` cuts carries no silhouette.
   auto uniform = [&](std::uint32_t node) {
     for (int k = 0; k < inside_count; ++k)
       if (!box_inside(nodes_[node].box, inside[k])) return false;
-    return faces_uniformly(node, p);
+    return faces_uniformly(node, p, p_radius);
   };
-  visit_volume(volume, uniform, [&](std::uint32_t tri) {
-    if (near(tri)) out.push_back(tri);
+  visit_volume(volume, uniform, [&](std::uint32_t node) {
+    for (std::uint32_t i = nodes_[node].first; i < nodes_[node].first + nodes_[node].count; ++i)
+      if (near_volume(order_[i], volume)) out.push_back(order_[i]);
   });
   std::sort(out.begin(), out.end());
+}
+
+void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
+                                    const Vec3d& p, double p_radius, std::vector<std::uint32_t>& leaves) const {
+  leaves.clear();
+  if (brute_force_ || nodes_.empty()) return;
+  auto uniform = [&](std::uint32_t node) {
+    for (int k = 0; k < inside_count; ++k)
+      if (!box_inside(nodes_[node].box, inside[k])) return false;
+    return faces_uniformly(node, p, p_radius);
+  };
+  visit_volume(volume, uniform, [&](std::uint32_t node) { leaves.push_back(node); });
+  std::sort(leaves.begin(), leaves.end(), [&](std::uint32_t a, std::uint32_t b) { return nodes_[a].first < nodes_[b].first; });
+}
+
+void OccluderBvh::silhouette_candidates_in(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
+                                           const HalfSpace* inside, int inside_count, const Vec3d& p,
+                                           std::vector<std::uint32_t>& out) const {
+  out.clear();
+  const Aabb query = padded(volume.box);
+  HalfSpace planes[16];  // unit normals, as visit_volume
+  const int plane_count = std::min<int>(16, static_cast<int>(volume.planes.size()));
+  for (int k = 0; k < plane_count; ++k) {
+    const double len = length(volume.planes[k].normal);
+    planes[k] = {len > 0 ? volume.planes[k].normal / len : Vec3d{}, volume.planes[k].origin};
+  }
+  for (std::uint32_t node : leaves) {
+    const Node& leaf = nodes_[node];
+    if (!leaf.box.overlaps(query)) continue;
+    bool skip = false;
+    for (int k = 0; k < plane_count && !skip; ++k) skip = box_outside_unit(leaf.box, planes[k]);
+    if (skip) continue;
+    bool inside_all = true;
+    for (int k = 0; k < inside_count && inside_all; ++k) inside_all = box_inside(leaf.box, inside[k]);
+    if (inside_all && faces_uniformly(node, p, 0)) continue;
+    for (std::uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i)
+      if (near_volume(order_[i], volume)) out.push_back(order_[i]);
+  }
 }
 
 template <class Prune, class Leaf>
@@ -344,7 +387,7 @@ void OccluderBvh::visit_volume(const ConvexVolume& volume, const Prune& prune, c
     for (int k = 0; k < plane_count && !outside; ++k) outside = box_outside_unit(node.box, planes[k]);
     if (outside || prune(self)) continue;
     if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) leaf(order_[i]);
+      leaf(self);
     } else {
       stack[top++] = node.first;
       stack[top++] = self + 1;

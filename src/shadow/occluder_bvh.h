@@ -14,6 +14,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "shadow/convex_volume.h"
@@ -55,8 +56,28 @@ class OccluderBvh {
   // culled per solid, so they are then all culled or all kept).
   // Such a subtree adds nothing to the silhouette: each of its edges has two triangles facing p
   // the same way, whose projections' boundaries cancel.
+  // p_radius > 0 asks for every point within p_radius of p at once (a cluster of vertices,
+  // silhouette_cluster.h): a subtree is skipped only if it faces all of them uniformly.
   void silhouette_candidates(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
-                             std::vector<std::uint32_t>& out) const;
+                             std::vector<std::uint32_t>& out, double p_radius = 0) const;
+
+  // The same search, returning the leaves it reaches (node indices, ascending by their first
+  // triangle) instead of their triangles: a cluster's search (silhouette_cluster.h).
+  void silhouette_leaves(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
+                         double p_radius, std::vector<std::uint32_t>& leaves) const;
+  // silhouette_candidates for one point p, searching only the given leaves (a cluster's, which
+  // hold every leaf the search from p would reach): the candidates of p, ascending, possibly
+  // fewer (a leaf that faces p uniformly is skipped even where its parent is not).
+  void silhouette_candidates_in(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
+                                const HalfSpace* inside, int inside_count, const Vec3d& p,
+                                std::vector<std::uint32_t>& out) const;
+
+  // The triangles of a leaf node: indices [first, second) (triangles are stored in leaf order).
+  std::pair<std::uint32_t, std::uint32_t> leaf_triangles(std::uint32_t node) const {
+    return {nodes_[node].first, nodes_[node].first + nodes_[node].count};
+  }
+  // The triangle is not wholly outside one of the volume's planes, and its box meets the volume's.
+  bool near_volume(std::uint32_t triangle, const ConvexVolume& volume) const;
 
   // Every triangle whose (padded) box the segment a -> b meets, unsorted (the caller tests them).
   void triangles_near_segment(const Vec3d& a, const Vec3d& b, std::vector<std::uint32_t>& out) const;
@@ -78,9 +99,9 @@ class OccluderBvh {
   };
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
   void build_cones();
-  bool faces_uniformly(std::uint32_t node, const Vec3d& p) const;
-  // Calls leaf(triangle) for the triangles of every leaf whose box meets the volume, skipping
-  // the subtrees for which prune(node) is true.
+  bool faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const;
+  // Calls leaf(node) for every leaf whose box meets the volume, skipping the subtrees for which
+  // prune(node) is true.
   template <class Prune, class Leaf>
   void visit_volume(const ConvexVolume& volume, const Prune& prune, const Leaf& leaf) const;
 

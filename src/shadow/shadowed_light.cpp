@@ -81,7 +81,7 @@ Response<double> shade_linear_shadowed(const LinearLight<double>& light, const S
 template <class Unoccluded>
 Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, const ShadingPoint<double>& sp,
                                      const ShadeOptions& options, const OccluderBvh& occluders,
-                                     const Unoccluded& unoccluded) {
+                                     const SilhouetteCluster* cluster, const Unoccluded& unoccluded) {
   const SpecularOptions spec = effective_specular(options);
   const AreaView<double> view = make_area_view(light, sp.p);
   if (!view.lit) return {};
@@ -92,7 +92,7 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   thread_local AreaSilhouetteScratch silhouette;
   const LightPieces* visible = nullptr;
   if (options.area_shadows == AreaShadowMethod::kSilhouette) {
-    switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette)) {
+    switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette, cluster)) {
       case SilhouetteVisibility::kUnoccluded: return unoccluded();
       case SilhouetteVisibility::kPieces: visible = &silhouette.pieces; break;
       case SilhouetteVisibility::kUndecided: break;
@@ -162,17 +162,6 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   return r;
 }
 
-// The regular n-gon of the disk's area: its inscribed n-gon scaled by sqrt(2 pi / (n sin(2 pi / n))).
-PreparedAreaLight<double> equal_area_polygon(const PreparedDiskLight<double>& disk) {
-  PreparedAreaLight<double> polygon = disk.inscribed;
-  const int n = polygon.count;
-  const double scale = std::sqrt(2 * M_PI / (n * std::sin(2 * M_PI / n)));
-  for (int i = 0; i < n; ++i) polygon.d[i] = polygon.d[i] * scale;
-  polygon.radius *= scale;
-  polygon.area = M_PI * disk.radius * disk.radius;
-  return polygon;
-}
-
 // Reach of a directional light's shadow ray: past every occluder.
 double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
   const Aabb& box = occluders.bounds();
@@ -182,16 +171,27 @@ double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
 
 }  // namespace
 
+// The regular n-gon of the disk's area: its inscribed n-gon scaled by sqrt(2 pi / (n sin(2 pi / n))).
+PreparedAreaLight<double> shadowed_polygon(const PreparedDiskLight<double>& disk) {
+  PreparedAreaLight<double> polygon = disk.inscribed;
+  const int n = polygon.count;
+  const double scale = std::sqrt(2 * M_PI / (n * std::sin(2 * M_PI / n)));
+  for (int i = 0; i < n; ++i) polygon.d[i] = polygon.d[i] * scale;
+  polygon.radius *= scale;
+  polygon.area = M_PI * disk.radius * disk.radius;
+  return polygon;
+}
+
 template <class K>
 Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& sp, const ShadeOptions& options,
-                                       const OccluderBvh& occluders) {
+                                       const OccluderBvh& occluders, const SilhouetteCluster* cluster) {
   if constexpr (std::is_same_v<K, LinearLight<double>>) {
     return shade_linear_shadowed(k, sp, options, occluders);
   } else if constexpr (std::is_same_v<K, PreparedAreaLight<double>>) {
-    return shade_area_shadowed(k, sp, options, occluders,
+    return shade_area_shadowed(k, sp, options, occluders, cluster,
                                [&] { return shade_area(k, sp, effective_specular(options)); });
   } else if constexpr (std::is_same_v<K, PreparedDiskLight<double>>) {
-    return shade_area_shadowed(equal_area_polygon(k), sp, options, occluders,
+    return shade_area_shadowed(shadowed_polygon(k), sp, options, occluders, cluster,
                                [&] { return shade_kernel<double>(k, sp, options); });
   } else {
     const Response<double> r = shade_kernel<double>(k, sp, options);
@@ -207,17 +207,23 @@ Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& s
 }
 
 template Response<double> shade_kernel_shadowed(const PointLight<double>&, const ShadingPoint<double>&,
-                                                const ShadeOptions&, const OccluderBvh&);
+                                                const ShadeOptions&, const OccluderBvh&,
+                                                const SilhouetteCluster*);
 template Response<double> shade_kernel_shadowed(const DirectionalLight<double>&, const ShadingPoint<double>&,
-                                                const ShadeOptions&, const OccluderBvh&);
+                                                const ShadeOptions&, const OccluderBvh&,
+                                                const SilhouetteCluster*);
 template Response<double> shade_kernel_shadowed(const SpotLight<double>&, const ShadingPoint<double>&,
-                                                const ShadeOptions&, const OccluderBvh&);
+                                                const ShadeOptions&, const OccluderBvh&,
+                                                const SilhouetteCluster*);
 template Response<double> shade_kernel_shadowed(const LinearLight<double>&, const ShadingPoint<double>&,
-                                                const ShadeOptions&, const OccluderBvh&);
+                                                const ShadeOptions&, const OccluderBvh&,
+                                                const SilhouetteCluster*);
 template Response<double> shade_kernel_shadowed(const PreparedAreaLight<double>&, const ShadingPoint<double>&,
-                                                const ShadeOptions&, const OccluderBvh&);
+                                                const ShadeOptions&, const OccluderBvh&,
+                                                const SilhouetteCluster*);
 template Response<double> shade_kernel_shadowed(const PreparedDiskLight<double>&, const ShadingPoint<double>&,
-                                                const ShadeOptions&, const OccluderBvh&);
+                                                const ShadeOptions&, const OccluderBvh&,
+                                                const SilhouetteCluster*);
 
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
                                 const ShadeOptions& options, const OccluderBvh& occluders) {

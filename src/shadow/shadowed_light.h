@@ -28,9 +28,19 @@
 
 namespace vlit {
 
+struct SilhouetteCluster;
+
+// cluster: for area and disk lights by silhouettes, a cluster holding sp (silhouette_cluster.h,
+// prepared for shadowed_polygon(kernel)) whose lists replace the per-vertex search; ignored
+// otherwise.
 template <class K>
 Response<double> shade_kernel_shadowed(const K& kernel, const ShadingPoint<double>& sp, const ShadeOptions& options,
-                                       const OccluderBvh& occluders);
+                                       const OccluderBvh& occluders, const SilhouetteCluster* cluster = nullptr);
+
+// The polygon whose visible part is computed: the light itself, or a disk's equal-area regular
+// 64-gon.
+inline const PreparedAreaLight<double>& shadowed_polygon(const PreparedAreaLight<double>& area) { return area; }
+PreparedAreaLight<double> shadowed_polygon(const PreparedDiskLight<double>& disk);
 
 // Dispatching form, range window included (as shade() in prepared_light.h).
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,

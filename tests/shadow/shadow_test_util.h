@@ -1,6 +1,8 @@
 // Small builders shared by the shadow tests.
 #pragma once
 
+#include <cmath>
+#include <map>
 #include <vector>
 
 #include "shading/prepared_light.h"
@@ -48,6 +50,40 @@ inline ShadeOptions options_with(SpecularMethod method) {
 // A square light of half-size `half` centred at (0, 0, height), emitting down (-z).
 inline std::vector<Vec3d> square_light(double half, double height) {
   return {{-half, -half, height}, {-half, half, height}, {half, half, height}, {half, -half, height}};
+}
+
+// Icosphere: the icosahedron with every triangle split in four `levels` times, vertices pushed
+// to the sphere; shared vertices have identical coordinates (midpoint of the same two corners).
+inline std::vector<Tri> icosphere(const Vec3d& center, double radius, int levels) {
+  const double g = (1 + std::sqrt(5.0)) / 2;
+  std::vector<Vec3d> v{{-1, g, 0}, {1, g, 0}, {-1, -g, 0}, {1, -g, 0}, {0, -1, g}, {0, 1, g},
+                       {0, -1, -g}, {0, 1, -g}, {g, 0, -1}, {g, 0, 1}, {-g, 0, -1}, {-g, 0, 1}};
+  for (Vec3d& x : v) x = normalize(x);
+  std::vector<std::array<int, 3>> f{{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+                                    {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2}, {3, 2, 6}, {3, 6, 8},
+                                    {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10}, {8, 6, 7}, {9, 8, 1}};
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<int, int>, int> middle;
+    auto mid = [&](int a, int b) {
+      const auto key = std::minmax(a, b);
+      const auto it = middle.find(key);
+      if (it != middle.end()) return it->second;
+      v.push_back(normalize(v[key.first] + v[key.second]));
+      return middle[key] = static_cast<int>(v.size()) - 1;
+    };
+    std::vector<std::array<int, 3>> next;
+    for (const auto& [a, b, c] : f) {
+      const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+      next.push_back({a, ab, ca});
+      next.push_back({b, bc, ab});
+      next.push_back({c, ca, bc});
+      next.push_back({ab, bc, ca});
+    }
+    f = next;
+  }
+  std::vector<Tri> tris;
+  for (const auto& [a, b, c] : f) tris.push_back({center + v[a] * radius, center + v[b] * radius, center + v[c] * radius});
+  return tris;
 }
 
 }  // namespace vlit::test

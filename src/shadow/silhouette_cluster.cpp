@@ -1,0 +1,191 @@
+#include "shadow/silhouette_cluster.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shadow/area_silhouette.h"
+
+namespace vlit {
+namespace {
+
+constexpr std::int8_t kVariableFacing = SilhouetteCluster::kVariable;
+// Relative margin of the classification over B: far above the rounding of the per-vertex
+// facing test (is_occluder's kEdgeOn is 1e-12), so a constant class never disagrees with it.
+constexpr double kClassMargin = 1e-9;
+
+std::array<Vec3d, 8> corners_of(const Aabb& b) {
+  std::array<Vec3d, 8> c;
+  for (int i = 0; i < 8; ++i) c[i] = {i & 1 ? b.hi.x : b.lo.x, i & 2 ? b.hi.y : b.lo.y, i & 4 ? b.hi.z : b.lo.z};
+  return c;
+}
+
+bool contains(const Aabb& outer, const Aabb& inner) {
+  return outer.lo.x <= inner.lo.x && outer.lo.y <= inner.lo.y && outer.lo.z <= inner.lo.z && inner.hi.x <= outer.hi.x &&
+         inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
+}
+
+// The facing of triangle t (facing_of in area_silhouette.cpp: +1 faces P, -1 faces away, 0
+// hides nothing) if it is the same for every P of the box b, else kVariableFacing.
+std::int8_t facing_over_box(const OccluderTriangles& triangles, std::uint32_t t, const Aabb& b,
+                            const std::array<Vec3d, 8>& corner) {
+  const auto& c = triangles.corners[t];
+  const Vec3d n = cross(c[1] - c[0], c[2] - c[0]);
+  const double longest = std::max({length_squared(c[1] - c[0]), length_squared(c[2] - c[1]), length_squared(c[0] - c[2])});
+  if (!(length(n) > kSliver * longest)) return 0;  // a needle hides nothing from anywhere
+  for (const Vec3d& x : c)
+    if (x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y && x.z >= b.lo.z && x.z <= b.hi.z)
+      return kVariableFacing;  // it may touch a vertex of the cluster
+  // side(P) = n.(c0 - P) is linear in P: its extremes over the box are at its corners.
+  double lo = 1e300, hi = -1e300, reach = 0;
+  for (const Vec3d& q : corner) {
+    const double side = dot(n, c[0] - q);
+    lo = std::min(lo, side);
+    hi = std::max(hi, side);
+    reach = std::max(reach, length(c[0] - q));
+  }
+  const double margin = kClassMargin * length(n) * reach;
+  if (hi < -margin) return 1;  // faces every P of the box
+  // Seen edge-on from every P of the box (its plane holds the box, e.g. a floor around a cluster of
+  // its own vertices): |side| stays below half of is_occluder's kEdgeOn bound at P's distance.
+  const Vec3d gap = max(b.lo - c[0], max(Vec3d{}, c[0] - b.hi));
+  if (std::max(std::abs(lo), std::abs(hi)) < 0.5 * kEdgeOn * length(n) * length(gap)) return 0;
+  if (!(lo > margin)) return kVariableFacing;
+  // Faces away from every P: hidden unless it is a back face of a closed surface culled from P
+  // (culled_back_face: P outside the surface's box).
+  if (triangles.solid.empty() || triangles.solid[t] < 0) return -1;
+  const Aabb& solid = triangles.solid_bounds[triangles.solid[t]];
+  if (contains(solid, b)) return -1;  // never culled
+  if (!solid.overlaps(b)) return 0;   // always culled
+  return kVariableFacing;
+}
+
+}  // namespace
+
+void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const ShadingPoint<double>* points,
+                                const std::uint32_t* index, int count, const OccluderBvh& occluders,
+                                SilhouetteCluster& cluster) {
+  using State = SilhouetteCluster::State;
+  cluster.state = State::kPerVertex;
+  cluster.box = Aabb{};
+  if (occluders.brute_force()) return;
+  // B: the vertices the light reaches, all on one side of it.
+  Aabb box;
+  int side = 0;
+  double h_min = 1e300, h_max = 0;
+  for (int i = 0; i < count; ++i) {
+    const ShadingPoint<double>& sp = points[index[i]];
+    const AreaView<double> view = make_area_view(light, sp.p);
+    if (!view.lit) continue;
+    bool above_horizon = false;  // some corner of the light above P's tangent plane
+    for (int k = 0; k < light.count && !above_horizon; ++k) above_horizon = dot(sp.n, light.d[k] + view.D) > 0;
+    if (!above_horizon) continue;
+    const int s = view.orient > 0 ? 1 : -1;
+    if (side != 0 && s != side) return;  // both sides of a two-sided light
+    side = s;
+    box.grow(sp.p);
+    h_min = std::min(h_min, view.height);
+    h_max = std::max(h_max, view.height);
+  }
+  if (side == 0) return;  // no vertex is lit: nothing to search
+  const Vec3d normal = side > 0 ? light.normal : -light.normal;
+  const Vec3d u = light.u, v = side > 0 ? light.v : -light.v;
+  const std::array<Vec3d, 8> corner = corners_of(box);
+  for (const Vec3d& q : corner)
+    if (!(dot(normal, q - light.center) > 0)) return;  // B reaches the light's plane
+
+  // R: the whole light's rectangle, grown as area_silhouette grows a view's (a view's clipped
+  // rectangle is inside the whole one, and its growth is not larger).
+  Rect2 tight;
+  for (int k = 0; k < light.count; ++k) tight.grow(dot(u, light.d[k]), dot(v, light.d[k]));
+  const double grow = kSilhouetteRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light.radius});
+  const Rect2 r{tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
+  const Vec3d rect[4] = {light.center + u * r.x0 + v * r.y0, light.center + u * r.x1 + v * r.y0,
+                         light.center + u * r.x1 + v * r.y1, light.center + u * r.x0 + v * r.y1};
+  const Vec3d middle = light.center + u * (0.5 * (r.x0 + r.x1)) + v * (0.5 * (r.y0 + r.y1));
+
+  // The hull of B and R: its box, one plane through each side of R leaning out to hold all of B
+  // (the supporting plane through that side and one corner of B), and the slab planes of the
+  // lowest and highest vertex.
+  ConvexVolume volume;
+  volume.box = box;
+  for (const Vec3d& x : rect) volume.box.grow(x);
+  const double scale = length(volume.box.hi - volume.box.lo);
+  for (int k = 0; k < 4; ++k) {
+    const Vec3d& a = rect[k];
+    const Vec3d& b = rect[(k + 1) % 4];
+    for (const Vec3d& q : corner) {
+      Vec3d n = cross(b - a, q - a);
+      const double len = length(n);
+      if (!(len > 0)) continue;
+      n = n / len;
+      if (dot(n, middle - a) < 0) n = -n;
+      bool holds = true;
+      for (const Vec3d& other : corner) holds = holds && dot(n, other - a) >= -1e-9 * scale;
+      if (!holds) continue;
+      volume.planes.push_back({n, a - n * (2e-9 * scale)});  // moved out past the tolerance
+      break;
+    }
+  }
+  const double margin_lo = kLightPlaneMargin * (h_min + light.radius), margin_hi = kLightPlaneMargin * (h_max + light.radius);
+  volume.planes.push_back({normal, light.center + normal * margin_lo});
+  volume.planes.push_back({-normal, light.center + normal * (h_max * (1 - kApexMargin))});
+  // A subtree must lie inside the slab of every vertex to be skipped as uniform.
+  const HalfSpace inside[2] = {{normal, light.center + normal * margin_hi},
+                               {-normal, light.center + normal * (h_min * (1 - kApexMargin))}};
+  const Vec3d center = box.center();
+  const double radius = 0.5 * length(box.hi - box.lo);
+  occluders.silhouette_leaves(volume, inside, 2, center, radius, cluster.leaves);
+  cluster.candidates.clear();
+  for (std::uint32_t leaf : cluster.leaves) {
+    const auto [first, end] = occluders.leaf_triangles(leaf);
+    for (std::uint32_t t = first; t < end; ++t)
+      if (occluders.near_volume(t, volume)) cluster.candidates.push_back(t);
+  }
+  cluster.box = box;
+  // No candidate is not "nothing hides the light": a closed surface wider than the light's
+  // pyramids has no silhouette in them. The vertex's shadow ray decides, as after its own search.
+  cluster.state = State::kLists;
+
+  const OccluderTriangles& triangles = occluders.triangles();
+  const OccluderEdges& edges = occluders.edges();
+  if (cluster.facing.size() != triangles.size() || cluster.edge_stamp.size() != edges.size()) {
+    cluster.facing.assign(triangles.size(), 0);
+    cluster.facing_stamp.assign(triangles.size(), 0);
+    cluster.edge_stamp.assign(edges.size(), 0);
+    cluster.edge_weight.assign(edges.size(), 0);
+    cluster.stamp = 0;
+  }
+  if (++cluster.stamp == 0) {
+    std::fill(cluster.facing_stamp.begin(), cluster.facing_stamp.end(), 0);
+    std::fill(cluster.edge_stamp.begin(), cluster.edge_stamp.end(), 0);
+    cluster.stamp = 1;
+  }
+  auto facing = [&](std::uint32_t t) {
+    if (cluster.facing_stamp[t] != cluster.stamp) {
+      cluster.facing_stamp[t] = cluster.stamp;
+      cluster.facing[t] = facing_over_box(triangles, t, box, corner);
+    }
+    return cluster.facing[t];
+  };
+  for (std::uint32_t t : cluster.candidates) {
+    facing(t);
+    for (int j = 0; j < 3; ++j) {
+      const std::uint32_t e = edges.edge_of[t][j];
+      if (cluster.edge_stamp[e] == cluster.stamp) continue;
+      cluster.edge_stamp[e] = cluster.stamp;
+      int weight = 0;
+      bool variable = false;
+      for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1] && !variable; ++k) {
+        const std::uint32_t code = edges.incident[k];
+        const std::int8_t f = facing(code / 3);
+        variable = f == kVariableFacing;
+        weight += f * edges.direction_of[code / 3][code % 3];
+      }
+      cluster.edge_weight[e] = static_cast<std::int8_t>(variable || std::abs(weight) >= SilhouetteCluster::kVariable
+                                                            ? SilhouetteCluster::kVariable
+                                                            : weight);
+    }
+  }
+}
+
+}  // namespace vlit

@@ -1,0 +1,62 @@
+// Coherence across vertices for the silhouette visibility of area lights (area_silhouette.h):
+// neighbouring vertices of a mesh see nearly the same occluders, so the BVH is searched once for
+// a cluster of vertices instead of once per vertex.
+//
+// For a cluster B (the box of its vertices) and a light L, every segment from a vertex of B to
+// L lies in the convex hull of B and L's rectangle R (the rectangle of the whole light, which
+// holds the rectangle of every horizon-clipped view of it), between the light's plane and the
+// highest level of B. One search of that volume returns the triangles that can carry a
+// silhouette edge seen from any point of B: the BVH skips a subtree only if it faces every point
+// of B the same way (the normal cone test of OccluderBvh::silhouette_candidates, widened by B's
+// radius) and no slab plane of any vertex cuts it. Then each triangle is classified over B:
+// - facing every point of B (+1), or facing away from all (-1), or hiding nothing from any (0:
+//   a needle, or a back face of a closed surface whose box B lies wholly outside of);
+// - variable otherwise (its plane meets B, it has a corner in B, or B straddles its solid's box).
+// An edge whose incident triangles are all constant has the same weight from every point of B:
+// its weight is not computed again per vertex; an edge with a variable triangle is weighed per
+// vertex. Per vertex, the search runs over the cluster's leaves only (OccluderBvh::
+// silhouette_candidates_in: a leaf outside the vertex's volume or facing it uniformly is skipped),
+// and the silhouette is collected from the candidates it returns as after a full search.
+//
+// The candidates hold every triangle the per-vertex search could return for any vertex of B (a
+// superset, of which the extra ones clip to nothing or weigh 0), so the visible pieces are the
+// same: tests/shadow/silhouette_test.cpp compares clustered, per-vertex and triangle-cut answers.
+// A cluster whose box reaches the light's plane (or both sides of a two-sided light) is not
+// clustered: its vertices search alone.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "shading/prepared_light.h"
+#include "shadow/occluder_bvh.h"
+
+namespace vlit {
+
+struct SilhouetteCluster {
+  enum class State {
+    kPerVertex,  // each vertex searches the BVH alone
+    kLists,      // leaves and candidates hold every triangle a vertex of the cluster needs
+  };
+  State state = State::kPerVertex;
+  Aabb box;  // B; a vertex outside it (the light barely above its horizon) searches alone
+  // The triangles that may carry a silhouette edge or a chord seen from some point of B,
+  // ascending; and per triangle and per edge of them, valid where the stamp is the cluster's:
+  // the triangle's facing over B (+1, -1, 0, or kVariable) and the edge's weight over B (or
+  // kVariable).
+  static constexpr int kVariable = 100;
+  std::vector<std::uint32_t> leaves;  // the BVH leaves the cluster's search reached
+  std::vector<std::uint32_t> candidates;
+  std::vector<std::int8_t> facing, edge_weight;
+  std::vector<std::uint32_t> facing_stamp, edge_stamp;
+  std::uint32_t stamp = 0;
+};
+
+// Prepares `cluster` for the vertices points[index[0 .. count)] and one area light. Vertices the
+// light cannot reach (behind a one-sided light, light below their horizon) are left out of B.
+void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const ShadingPoint<double>* points,
+                                const std::uint32_t* index, int count, const OccluderBvh& occluders,
+                                SilhouetteCluster& cluster);
+
+}  // namespace vlit

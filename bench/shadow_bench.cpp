@@ -31,7 +31,10 @@
 #include <string>
 #include <vector>
 
+#include <omp.h>
+
 #include "bake/light_vertices.h"
+#include "shadow/shadowed_vertices.h"
 #include "scene/load_scene.h"
 #include "scene/material.h"
 #include "shadow/occluder_bvh.h"
@@ -108,7 +111,8 @@ double shadow_ray_diffuse(const LightSource& light, const ShadingPoint<double>& 
   return total;
 }
 
-void bowling(const std::string& scene_path, const std::string& lights_path, bool quick, bool part1, bool part2) {
+void bowling(const std::string& scene_path, const std::string& lights_path, bool quick, bool part1, bool part2,
+             bool with_cuts) {
   LoadedScene loaded = load_scene(scene_path, lights_path, false);
   Scene& scene = loaded.scene;
   std::printf("## 1. %s with %s: whole vertex loop (%zu vertices, %zu lights, all cores)\n\n", scene_path.c_str(),
@@ -130,12 +134,19 @@ void bowling(const std::string& scene_path, const std::string& lights_path, bool
     on = light_scene_vertices(scene, request);
     t_on = process_seconds() - t;
     const double wall_on = wall_since();
+    request.shade.shadow_clusters = false;
+    t = process_seconds();
+    wall = std::chrono::steady_clock::now();
+    const std::vector<VertexLight> alone = light_scene_vertices(scene, request);
+    const double t_alone = process_seconds() - t;
+    const double wall_alone = wall_since();
     request.shade.area_shadows = AreaShadowMethod::kTriangleCuts;
     t = process_seconds();
     wall = std::chrono::steady_clock::now();
-    const std::vector<VertexLight> cuts = light_scene_vertices(scene, request);
+    const std::vector<VertexLight> cuts = with_cuts ? light_scene_vertices(scene, request) : alone;
     const double t_cuts = process_seconds() - t;
     const double wall_cuts = wall_since();
+    double alone_difference = 0;
     double dark = 0, total = 0, largest = 0, difference = 0;
     for (std::size_t p = 0; p < on.size(); ++p)
       for (std::size_t v = 0; v < on[p].diffuse.size(); ++v) {
@@ -144,16 +155,23 @@ void bowling(const std::string& scene_path, const std::string& lights_path, bool
         for (int c = 0; c < 3; ++c) {
           largest = std::max(largest, std::abs(double(cuts[p].diffuse[v][c])));
           difference = std::max(difference, std::abs(double(on[p].diffuse[v][c]) - cuts[p].diffuse[v][c]));
+          alone_difference = std::max(alone_difference, std::abs(double(on[p].diffuse[v][c]) - alone[p].diffuse[v][c]));
         }
       }
     std::printf("| shadows | wall time (s) | CPU time, all threads (s) | CPU µs per vertex | ratio to off (wall) | ratio to off (CPU) |\n|---|---|---|---|---|---|\n");
     std::printf("| off | %.3f | %.3f | %.2f | 1 | 1 |\n", wall_off, t_off, 1e6 * t_off / total);
-    std::printf("| on, silhouettes | %.3f | %.3f | %.2f | %.1f | %.1f |\n", wall_on, t_on, 1e6 * t_on / total,
-                wall_on / wall_off, t_on / t_off);
-    std::printf("| on, triangle cuts | %.3f | %.3f | %.2f | %.1f | %.1f |\n\n", wall_cuts, t_cuts, 1e6 * t_cuts / total,
-                wall_cuts / wall_off, t_cuts / t_off);
-    std::printf("%.0f of %.0f vertices (%.1f%%) lose more than 1e-6 of their light to a shadow. Largest difference between silhouettes and "
-                "triangle cuts: %.2e of the largest value.\n\n", dark, total, 100 * dark / total, difference / largest);
+    std::printf("| on, silhouettes, clusters of vertices (default) | %.3f | %.3f | %.2f | %.1f | %.1f |\n", wall_on, t_on,
+                1e6 * t_on / total, wall_on / wall_off, t_on / t_off);
+    std::printf("| on, silhouettes, one search per vertex | %.3f | %.3f | %.2f | %.1f | %.1f |\n", wall_alone, t_alone,
+                1e6 * t_alone / total, wall_alone / wall_off, t_alone / t_off);
+    if (with_cuts)
+      std::printf("| on, triangle cuts | %.3f | %.3f | %.2f | %.1f | %.1f |\n", wall_cuts, t_cuts, 1e6 * t_cuts / total,
+                  wall_cuts / wall_off, t_cuts / t_off);
+    std::printf("\n%.0f of %.0f vertices (%.1f%%) lose more than 1e-6 of their light to a shadow. Largest difference, "
+                "clusters against one search per vertex: %.2e of the largest value", dark, total, 100 * dark / total,
+                alone_difference / largest);
+    if (with_cuts) std::printf("; against triangle cuts: %.2e", difference / largest);
+    std::printf(".\n\n");
   }
 
   if (!part2) return;
@@ -254,6 +272,7 @@ std::vector<Tri> sphere(std::size_t n) {
 }
 
 void scaling(bool quick) {
+  omp_set_num_threads(1);  // per-vertex costs of one thread, the clustered loop included
   LightSource l;
   l.type = LightType::kArea;
   l.name = "square";
@@ -266,8 +285,9 @@ void scaling(bool quick) {
   std::printf("## 3. Cost per vertex against the number of occluder triangles (%zu receiver vertices, one thread)\n\n",
               pts.size());
   for (int series = 0; series < 2; ++series) {
-    std::printf("%s\n\n| triangles | BVH build (ms) | CPU µs per vertex (silhouettes) | CPU µs per vertex (triangle cuts) "
-                "| cuts / silhouettes | largest difference / mean | mean diffuse |\n|---|---|---|---|---|---|---|\n",
+    std::printf("%s\n\n| triangles | BVH build (ms) | CPU µs per vertex (silhouettes) | CPU µs per vertex (silhouettes, "
+                "clusters of 16) | CPU µs per vertex (triangle cuts) | cuts / silhouettes | largest difference / mean "
+                "(clusters; cuts) | mean diffuse |\n|---|---|---|---|---|---|---|---|\n",
                 series == 0 ? "(a) the scene grows (constant density field):" : "(b) one sphere, refined:");
     ShadeOptions cut_options = o;
     cut_options.area_shadows = AreaShadowMethod::kTriangleCuts;
@@ -284,6 +304,14 @@ void scaling(bool quick) {
       for (std::size_t i = 0; i < pts.size(); ++i) mean += value[i] = shade_shadowed(light, pts[i], o, bvh).diffuse;
       mean /= pts.size();
       const double per_vertex = seconds_since(t) / pts.size();
+      // The vertex loop's path: one BVH search per cluster of neighbouring receivers (one thread).
+      std::vector<Vec3d> clustered(pts.size());
+      t = Clock::now();
+      accumulate_light_shadowed(light, o, pts.data(), static_cast<long>(pts.size()), clustered.data(), nullptr, bvh);
+      const double cluster_per_vertex = seconds_since(t) / pts.size();
+      double cluster_difference = 0;
+      for (std::size_t i = 0; i < pts.size(); ++i)
+        cluster_difference = std::max(cluster_difference, std::abs(clustered[i].x / light.radiance.x - value[i]));
       const bool cuts = series == 0 || n <= 10000;  // the cuts take ~0.5 s per vertex at 1e5 sphere triangles
       double cut_per_vertex = 0, difference = 0;
       if (cuts) {
@@ -293,10 +321,12 @@ void scaling(bool quick) {
         cut_per_vertex = seconds_since(t) / pts.size();
       }
       if (cuts)
-        std::printf("| %zu | %.1f | %.1f | %.1f | %.1f | %.1e | %.6f |\n", tris.size(), 1e3 * build, 1e6 * per_vertex,
-                    1e6 * cut_per_vertex, cut_per_vertex / per_vertex, difference / mean, mean);
+        std::printf("| %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1e; %.1e | %.6f |\n", tris.size(), 1e3 * build,
+                    1e6 * per_vertex, 1e6 * cluster_per_vertex, 1e6 * cut_per_vertex, cut_per_vertex / per_vertex,
+                    cluster_difference / mean, difference / mean, mean);
       else
-        std::printf("| %zu | %.1f | %.1f | — | — | — | %.6f |\n", tris.size(), 1e3 * build, 1e6 * per_vertex, mean);
+        std::printf("| %zu | %.1f | %.1f | %.1f | — | — | %.1e; — | %.6f |\n", tris.size(), 1e3 * build, 1e6 * per_vertex,
+                    1e6 * cluster_per_vertex, cluster_difference / mean, mean);
       std::fflush(stdout);
     }
     std::printf("\n");
@@ -307,22 +337,23 @@ void scaling(bool quick) {
 }  // namespace vlit::bench
 
 int main(int argc, char** argv) {
-  bool quick = false;
+  bool quick = false, with_cuts = true;
   int only = 0;
   std::string scene = "assets/paper/bowling.glb", lights = "assets/paper/bowling-area.json";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick") quick = true;
+    else if (a == "--no-cuts") with_cuts = false;
     else if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
     else if (a == "--scene" && i + 1 < argc) scene = argv[++i];
     else if (a == "--lights" && i + 1 < argc) lights = argv[++i];
     else {
-      std::fprintf(stderr, "usage: shadow_bench [--quick] [--only 1|2|3] [--scene FILE --lights LIGHTS.json]\n");
+      std::fprintf(stderr, "usage: shadow_bench [--quick] [--only 1|2|3] [--scene FILE --lights LIGHTS.json] [--no-cuts]\n");
       return 2;
     }
   }
   try {
-    if (only == 0 || only == 1 || only == 2) vlit::bench::bowling(scene, lights, quick, only != 2, only != 1);
+    if (only == 0 || only == 1 || only == 2) vlit::bench::bowling(scene, lights, quick, only != 2, only != 1, with_cuts);
     if (only == 0 || only == 3) vlit::bench::scaling(quick);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadow_bench: %s\n", e.what());

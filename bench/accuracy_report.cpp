@@ -1711,7 +1711,7 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
      << "- **Cycles comparison, lights left out**: it covers what Cycles represents exactly (point lights, "
         "rectangular area lights, linear lights of falloff 2 as point chains). Spots (Cycles 3.4 multiplies its spot "
         "by cos ψ to the axis; `--calibrate` shows it), other polygons, disks, two-sided lights and falloff ≠ 2 are "
-        "not compared; nor shadows (both sides bake without them; vlit's are off by default, docs/shadows.md).\n"
+        "not compared; shadows are compared apart: with shadows on both sides, on three scenes, in docs/shadows.md (\"Against Blender Cycles with shadows\"; scripts/cycles-shadows-compare.sh).\n"
      << "- **Disk specular, hardest stiff cases** (P 1e-4 from the rim, radius 1e6 seen off-centre, m = 1e4): the "
         "long-double reference (`tests/kernels/area/disk_reference.h`) takes 2-40 s per case there, so the report checks "
         "only the diffuse on them; the disk tests check the exact specular there against closed-form limits.\n"

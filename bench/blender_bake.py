@@ -6,6 +6,9 @@
 #       --asset ASSET.glb --lights LIGHTS.json --samples 1,4,16 --threads 1 --out DIR
 #   blender -b --factory-startup --python bench/blender_bake.py -- --calibrate --out DIR
 #
+# --shadows: the lights cast shadows and every mesh casts them (scripts/cycles-shadows-compare.sh
+# compares that bake with vlit's exact shadows, docs/shadows.md).
+#
 # Asset mode writes DIR/cycles-S.txt per sample count S: one line "x y z nx ny nz r" per face
 # corner, position and corner normal in glTF coordinates (+Y up), r the baked value; and
 # DIR/cycles-times.txt: "samples seconds" per bake (the bpy.ops.object.bake call only) plus
@@ -37,7 +40,8 @@
 #   So it becomes K point lights at the midpoints of K equal pieces, each of power 4 pi^2 Ip / K:
 #   the midpoint rule of vlit's own integral, whose error (vlit bakes the same point chain for
 #   the report) is the floor Cycles cannot go below in this comparison.
-# Shadows are off (lights' cast_shadow, objects' shadow visibility): vlit's bake does not shadow.
+# Shadows are off (lights' cast_shadow, objects' shadow visibility) unless --shadows is given:
+# vlit's bake does not shadow by default.
 import json
 import math
 import os
@@ -47,6 +51,7 @@ import time
 import bpy
 
 LINEAR_POINTS = 32
+SHADOWS = False  # set by --shadows
 
 
 def fix_numpy_bool_alias():
@@ -62,12 +67,15 @@ def fix_numpy_bool_alias():
 
 def parse_args():
     argv = sys.argv[sys.argv.index("--") + 1:] if "--" in sys.argv else []
-    args = {"samples": "1,4,16,64", "threads": "1", "out": None, "asset": None, "lights": None, "calibrate": False}
+    args = {"samples": "1,4,16,64", "threads": "1", "out": None, "asset": None, "lights": None, "calibrate": False,
+            "shadows": False}
     i = 0
     while i < len(argv):
         a = argv[i]
         if a == "--calibrate":
             args["calibrate"] = True
+        elif a == "--shadows":
+            args["shadows"] = True
         elif a in ("--asset", "--lights", "--samples", "--threads", "--out") and i + 1 < len(argv):
             args[a[2:]] = argv[i + 1]
             i += 1
@@ -121,8 +129,8 @@ def add_light(name, kind, location, power, **extra):
     data = bpy.data.lights.new(name, kind)
     data.energy = power
     data.color = (1.0, 1.0, 1.0)
-    data.cycles.cast_shadow = False
-    data.use_shadow = False
+    data.cycles.cast_shadow = SHADOWS
+    data.use_shadow = SHADOWS
     if kind in ("POINT", "SPOT"):
         data.shadow_soft_size = 0.0
     for k, v in extra.items():
@@ -235,7 +243,7 @@ def prepare_meshes():
         o.data.materials.append(mat)
         for poly in o.data.polygons:
             poly.material_index = 0
-        o.visible_shadow = False
+        o.visible_shadow = SHADOWS
         for a in list(o.data.color_attributes):
             o.data.color_attributes.remove(a)
         attr = o.data.color_attributes.new("cycles_bake", "FLOAT_COLOR", "CORNER")
@@ -269,6 +277,8 @@ def corner_records(meshes):
 
 
 def run_asset(args):
+    global SHADOWS
+    SHADOWS = args["shadows"]
     for path in (args["asset"], args["lights"]):
         if not os.path.isfile(path):
             sys.exit("blender_bake.py: %s: no such file" % path)

@@ -138,29 +138,44 @@ void add_chords(const Frame& f, const std::array<Vec3d, 3>& c, int ft, AreaSilho
   }
 }
 
-// The silhouette segments of the candidates: weighted edges, and chords where a triangle leaves
-// the slab. With a cluster (silhouette_cluster.h), the facings and edge weights that are the same
-// from all of its points are taken from it.
+// The silhouette segments: weighted edges, and chords where a triangle leaves the slab; of the
+// candidates of P's own search, or of a cluster's lists (silhouette_cluster.h), whose facings and
+// edge weights that are the same from all of its points are read, not recomputed.
 void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const SilhouetteCluster* cluster,
                         AreaSilhouetteScratch& s) {
   const OccluderTriangles& triangles = occluders.triangles();
   const OccluderEdges& edges = occluders.edges();
   constexpr int kVariable = SilhouetteCluster::kVariable;
+  if (cluster) {
+    // In the cluster's leaves that P reaches (s.leaves), the edges whose weight over the cluster
+    // is not 0 and the triangles that may leave P's slab (silhouette_cluster.h).
+    for (std::uint32_t i : s.leaves) {
+      for (std::uint32_t k = cluster->edges_begin[i]; k < cluster->edges_begin[i + 1]; ++k) {
+        const std::uint32_t e = cluster->weighed_edges[k];
+        if (s.edge_stamp[e] == s.stamp) continue;  // listed by both of its triangles' leaves
+        s.edge_stamp[e] = s.stamp;
+        const int fixed = cluster->edge_weight[e];
+        const int weight = fixed == kVariable ? edge_weight(occluders, e, f.p, s) : fixed;
+        if (weight != 0) add_edge(f, edges, e, weight, s);
+      }
+      for (std::uint32_t k = cluster->chords_begin[i]; k < cluster->chords_begin[i + 1]; ++k) {
+        const std::uint32_t t = cluster->chord_triangles[k];
+        const int fixed = cluster->facing[t];
+        const int ft = fixed == kVariable ? facing_of(triangles, t, f.p, s) : fixed;
+        if (ft != 0) add_chords(f, triangles.corners[t], ft, s);
+      }
+    }
+    return;
+  }
   for (std::uint32_t t : s.candidates) {
     // A candidate that hides nothing itself (it touches P, is a culled back face, a needle) still
     // weighs its edges: its neighbours may lie in subtrees the search skipped.
-    // The cluster classified its candidates and their edge neighbours (stamped); a triangle its
-    // search left out (near P's volume by the corner test but not near the cluster's) is
-    // weighed here.
-    const bool known = cluster && cluster->facing_stamp[t] == cluster->stamp;
-    const int fixed_facing = known ? cluster->facing[t] : kVariable;
-    const int ft = fixed_facing == kVariable ? facing_of(triangles, t, f.p, s) : fixed_facing;
+    const int ft = facing_of(triangles, t, f.p, s);
     for (int j = 0; j < 3; ++j) {
       const std::uint32_t e = edges.edge_of[t][j];
       if (s.edge_stamp[e] == s.stamp) continue;
       s.edge_stamp[e] = s.stamp;
-      const int fixed = cluster && cluster->edge_stamp[e] == cluster->stamp ? cluster->edge_weight[e] : kVariable;
-      const int weight = fixed == kVariable ? edge_weight(occluders, e, f.p, s) : fixed;
+      const int weight = edge_weight(occluders, e, f.p, s);
       if (weight != 0) add_edge(f, edges, e, weight, s);
     }
     if (ft != 0) add_chords(f, triangles.corners[t], ft, s);
@@ -259,7 +274,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
                          p.x <= b->hi.x && p.y >= b->lo.y && p.y <= b->hi.y && p.z >= b->lo.z && p.z <= b->hi.z;
   const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
-  if (clustered) occluders.silhouette_candidates_in(cluster->leaves, volume, slab, 2, p, s.candidates);
+  if (clustered) occluders.leaves_reached(cluster->leaves, volume, slab, 2, p, s.leaves);
   else occluders.silhouette_candidates(volume, slab, 2, p, s.candidates);
   // The pyramid's sides, inward, in the order bottom, right, top, left (project() relies on it).
   const Vec3d corner[4] = {f.center + f.u * f.rect.x0 + f.v * f.rect.y0, f.center + f.u * f.rect.x1 + f.v * f.rect.y0,

@@ -342,9 +342,9 @@ void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace*
   std::sort(leaves.begin(), leaves.end(), [&](std::uint32_t a, std::uint32_t b) { return nodes_[a].first < nodes_[b].first; });
 }
 
-void OccluderBvh::silhouette_candidates_in(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
-                                           const HalfSpace* inside, int inside_count, const Vec3d& p,
-                                           std::vector<std::uint32_t>& out) const {
+void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
+                                 const HalfSpace* inside, int inside_count, const Vec3d& p,
+                                 std::vector<std::uint32_t>& out) const {
   out.clear();
   const Aabb query = padded(volume.box);
   HalfSpace planes[16];  // unit normals, as visit_volume
@@ -353,17 +353,16 @@ void OccluderBvh::silhouette_candidates_in(const std::vector<std::uint32_t>& lea
     const double len = length(volume.planes[k].normal);
     planes[k] = {len > 0 ? volume.planes[k].normal / len : Vec3d{}, volume.planes[k].origin};
   }
-  for (std::uint32_t node : leaves) {
-    const Node& leaf = nodes_[node];
-    if (!leaf.box.overlaps(query)) continue;
-    bool skip = false;
-    for (int k = 0; k < plane_count && !skip; ++k) skip = box_outside_unit(leaf.box, planes[k]);
-    if (skip) continue;
+  for (std::uint32_t i = 0; i < leaves.size(); ++i) {
+    const Aabb& box = nodes_[leaves[i]].box;
+    if (!box.overlaps(query)) continue;
+    bool outside = false;
+    for (int k = 0; k < plane_count && !outside; ++k) outside = box_outside_unit(box, planes[k]);
+    if (outside) continue;
     bool inside_all = true;
-    for (int k = 0; k < inside_count && inside_all; ++k) inside_all = box_inside(leaf.box, inside[k]);
-    if (inside_all && faces_uniformly(node, p, 0)) continue;
-    for (std::uint32_t i = leaf.first; i < leaf.first + leaf.count; ++i)
-      if (near_volume(order_[i], volume)) out.push_back(order_[i]);
+    for (int k = 0; k < inside_count && inside_all; ++k) inside_all = box_inside(box, inside[k]);
+    if (inside_all && faces_uniformly(leaves[i], p, 0)) continue;
+    out.push_back(i);
   }
 }
 

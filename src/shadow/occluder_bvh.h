@@ -65,12 +65,12 @@ class OccluderBvh {
   // triangle) instead of their triangles: a cluster's search (silhouette_cluster.h).
   void silhouette_leaves(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
                          double p_radius, std::vector<std::uint32_t>& leaves) const;
-  // silhouette_candidates for one point p, searching only the given leaves (a cluster's, which
-  // hold every leaf the search from p would reach): the candidates of p, ascending, possibly
-  // fewer (a leaf that faces p uniformly is skipped even where its parent is not).
-  void silhouette_candidates_in(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
-                                const HalfSpace* inside, int inside_count, const Vec3d& p,
-                                std::vector<std::uint32_t>& out) const;
+
+  // Of the given leaves (a cluster's, from silhouette_leaves), the positions i of those the search
+  // from p over `volume` reaches: leaves[i] is not wholly outside one of the volume's planes or
+  // box, and does not both lie inside `inside` and face p uniformly. Ascending.
+  void leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume, const HalfSpace* inside,
+                      int inside_count, const Vec3d& p, std::vector<std::uint32_t>& out) const;
 
   // The triangles of a leaf node: indices [first, second) (triangles are stored in leaf order).
   std::pair<std::uint32_t, std::uint32_t> leaf_triangles(std::uint32_t node) const {

@@ -26,23 +26,26 @@ bool contains(const Aabb& outer, const Aabb& inner) {
 
 // The facing of triangle t (facing_of in area_silhouette.cpp: +1 faces P, -1 faces away, 0
 // hides nothing) if it is the same for every P of the box b, else kVariableFacing.
-std::int8_t facing_over_box(const OccluderTriangles& triangles, std::uint32_t t, const Aabb& b,
-                            const std::array<Vec3d, 8>& corner) {
+std::int8_t facing_over_box(const OccluderTriangles& triangles, std::uint32_t t, const Aabb& b) {
   const auto& c = triangles.corners[t];
   const Vec3d n = cross(c[1] - c[0], c[2] - c[0]);
   const double longest = std::max({length_squared(c[1] - c[0]), length_squared(c[2] - c[1]), length_squared(c[0] - c[2])});
   if (!(length(n) > kSliver * longest)) return 0;  // a needle hides nothing from anywhere
+  // The triangle and B in one plane of constant x, y or z (a flat floor around a cluster of its
+  // own vertices): n is exactly along that axis and n.(c0 - P) is exactly 0 for every P of B, so
+  // is_occluder sees it edge-on from all of them.
+  for (int a = 0; a < 3; ++a)
+    if (b.lo[a] == b.hi[a] && c[0][a] == b.lo[a] && c[1][a] == b.lo[a] && c[2][a] == b.lo[a]) return 0;
   for (const Vec3d& x : c)
     if (x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y && x.z >= b.lo.z && x.z <= b.hi.z)
       return kVariableFacing;  // it may touch a vertex of the cluster
-  // side(P) = n.(c0 - P) is linear in P: its extremes over the box are at its corners.
-  double lo = 1e300, hi = -1e300, reach = 0;
-  for (const Vec3d& q : corner) {
-    const double side = dot(n, c[0] - q);
-    lo = std::min(lo, side);
-    hi = std::max(hi, side);
-    reach = std::max(reach, length(c[0] - q));
-  }
+  // side(P) = n.(c0 - P) is linear in P: over the box it spans side(centre) -+ sum |n_i| h_i
+  // (h the box's half extent). reach bounds |c0 - P| over the box.
+  const Vec3d middle = b.center(), half = (b.hi - b.lo) * 0.5;
+  const double at_middle = dot(n, c[0] - middle);
+  const double spread = std::abs(n.x) * half.x + std::abs(n.y) * half.y + std::abs(n.z) * half.z;
+  const double lo = at_middle - spread, hi = at_middle + spread;
+  const double reach = length(c[0] - middle) + length(half);
   const double margin = kClassMargin * length(n) * reach;
   if (hi < -margin) return 1;  // faces every P of the box
   // Seen edge-on from every P of the box (its plane holds the box, e.g. a floor around a cluster of
@@ -136,11 +139,15 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   const double radius = 0.5 * length(box.hi - box.lo);
   occluders.silhouette_leaves(volume, inside, 2, center, radius, cluster.leaves);
   cluster.candidates.clear();
+  std::vector<std::uint32_t>& candidates_begin = cluster.candidates_begin;
+  candidates_begin.clear();
   for (std::uint32_t leaf : cluster.leaves) {
+    candidates_begin.push_back(static_cast<std::uint32_t>(cluster.candidates.size()));
     const auto [first, end] = occluders.leaf_triangles(leaf);
     for (std::uint32_t t = first; t < end; ++t)
       if (occluders.near_volume(t, volume)) cluster.candidates.push_back(t);
   }
+  candidates_begin.push_back(static_cast<std::uint32_t>(cluster.candidates.size()));
   cluster.box = box;
   // No candidate is not "nothing hides the light": a closed surface wider than the light's
   // pyramids has no silhouette in them. The vertex's shadow ray decides, as after its own search.
@@ -163,15 +170,21 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   auto facing = [&](std::uint32_t t) {
     if (cluster.facing_stamp[t] != cluster.stamp) {
       cluster.facing_stamp[t] = cluster.stamp;
-      cluster.facing[t] = facing_over_box(triangles, t, box, corner);
+      cluster.facing[t] = facing_over_box(triangles, t, box);
     }
     return cluster.facing[t];
   };
-  for (std::uint32_t t : cluster.candidates) {
-    facing(t);
-    for (int j = 0; j < 3; ++j) {
-      const std::uint32_t e = edges.edge_of[t][j];
-      if (cluster.edge_stamp[e] == cluster.stamp) continue;
+  // Wholly inside every vertex's slab, with a margin above the rounding of the per-vertex planes.
+  const double slab_margin = 1e-9 * (h_max + light.radius);
+  auto inside_every_slab = [&](std::uint32_t t) {
+    for (const HalfSpace& h : inside)
+      for (const Vec3d& x : triangles.corners[t])
+        if (!(h.signed_distance(x) > slab_margin * length(h.normal))) return false;
+    return true;
+  };
+  // The weight over B of edge e, computed once (edge_stamp).
+  auto weight_over_box = [&](std::uint32_t e) {
+    if (cluster.edge_stamp[e] != cluster.stamp) {
       cluster.edge_stamp[e] = cluster.stamp;
       int weight = 0;
       bool variable = false;
@@ -185,7 +198,26 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
                                                             ? SilhouetteCluster::kVariable
                                                             : weight);
     }
+    return cluster.edge_weight[e];
+  };
+  cluster.weighed_edges.clear();
+  cluster.chord_triangles.clear();
+  cluster.edges_begin.clear();
+  cluster.chords_begin.clear();
+  for (std::size_t i = 0; i < cluster.leaves.size(); ++i) {
+    cluster.edges_begin.push_back(static_cast<std::uint32_t>(cluster.weighed_edges.size()));
+    cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_triangles.size()));
+    for (std::uint32_t c = candidates_begin[i]; c < candidates_begin[i + 1]; ++c) {
+      const std::uint32_t t = cluster.candidates[c];
+      if (facing(t) != 0 && !inside_every_slab(t)) cluster.chord_triangles.push_back(t);
+      for (int j = 0; j < 3; ++j) {
+        const std::uint32_t e = edges.edge_of[t][j];
+        if (weight_over_box(e) != 0) cluster.weighed_edges.push_back(e);
+      }
+    }
   }
+  cluster.edges_begin.push_back(static_cast<std::uint32_t>(cluster.weighed_edges.size()));
+  cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_triangles.size()));
 }
 
 }  // namespace vlit

@@ -14,13 +14,16 @@
 // - variable otherwise (its plane meets B, it has a corner in B, or B straddles its solid's box).
 // An edge whose incident triangles are all constant has the same weight from every point of B:
 // its weight is not computed again per vertex; an edge with a variable triangle is weighed per
-// vertex. Per vertex, the search runs over the cluster's leaves only (OccluderBvh::
-// silhouette_candidates_in: a leaf outside the vertex's volume or facing it uniformly is skipped),
-// and the silhouette is collected from the candidates it returns as after a full search.
+// vertex. A vertex of B searches only the cluster's leaves (a leaf outside its own volume, or
+// facing it uniformly, is skipped: OccluderBvh::leaves_reached) and in each leaf reads only the
+// edges whose weight over B is not 0 and the triangles that may leave its slab; the rest of the
+// leaf adds nothing to its silhouette (an edge between two triangles that face B the same way
+// weighs 0 from every point of B).
 //
 // The candidates hold every triangle the per-vertex search could return for any vertex of B (a
-// superset, of which the extra ones clip to nothing or weigh 0), so the visible pieces are the
-// same: tests/shadow/silhouette_test.cpp compares clustered, per-vertex and triangle-cut answers.
+// superset, whose extra edges and chords clip to nothing in the vertex's pyramid or weigh 0;
+// every edge is weighed by all of its triangles, not only the candidates), so the visible pieces
+// are the same: tests/shadow/silhouette_test.cpp compares clustered, per-vertex and triangle-cut answers.
 // A cluster whose box reaches the light's plane (or both sides of a two-sided light) is not
 // clustered: its vertices search alone.
 #pragma once
@@ -47,7 +50,14 @@ struct SilhouetteCluster {
   // kVariable).
   static constexpr int kVariable = 100;
   std::vector<std::uint32_t> leaves;  // the BVH leaves the cluster's search reached
-  std::vector<std::uint32_t> candidates;
+  std::vector<std::uint32_t> candidates, candidates_begin;  // leaves[i]'s: [begin[i], begin[i + 1])
+  // What a vertex of B reads instead of its candidates, per leaf (leaves[i]'s items are
+  // [edges_begin[i], edges_begin[i + 1]) and the same for chords): the edges of the leaf's
+  // candidates whose weight over B is not 0 (constant or kVariable; an edge shared by two leaves
+  // is listed by both), and the candidates that may leave some vertex's slab (facing not 0 and
+  // not wholly inside the slab of every vertex): their chords.
+  std::vector<std::uint32_t> weighed_edges, chord_triangles;
+  std::vector<std::uint32_t> edges_begin, chords_begin;
   std::vector<std::int8_t> facing, edge_weight;
   std::vector<std::uint32_t> facing_stamp, edge_stamp;
   std::uint32_t stamp = 0;

@@ -172,17 +172,25 @@ TEST_CASE("clusters = one search per vertex: a surface shadowing its own vertice
   CHECK(a.clustered < 0.9);
 }
 
-TEST_CASE("clusters = one search per vertex: a closed sphere over a floor, lighting its own vertices") {
+// A closed sphere and a closed table over a floor under a panel, every coordinate x mapped to
+// x * scale + offset; the floor points and the sphere's own corners as receivers.
+ClusterAgreement sphere_and_table_over_floor(double scale, const Vec3d& offset) {
   // Closed solids cull their back faces from points outside their box. The sphere: floor clusters
   // lie outside its box, clusters of its own vertices inside it. A second solid, a slab on a
   // pillar standing on the floor, holds floor points under the slab in its box: from there its
   // back faces count (silhouette edges of weight 2), from farther floor points they are culled.
-  const std::vector<Tri> sphere = icosphere({0.1, -0.05, 1.2}, 0.5, 3);
+  auto at = [&](const Vec3d& x) { return x * scale + offset; };
+  std::vector<Tri> sphere = icosphere({0.1, -0.05, 1.2}, 0.5, 3);
   std::vector<Tri> table;
   add_box(table, {-1.4, 0.3, 0.6}, {-0.2, 1.2, 0.75});
   add_box(table, {-1.4, 1.25, 0}, {-1.25, 1.4, 0.75});
+  std::vector<Tri> floor;
+  add_quad(floor, {-3, -3, 0}, {6, 0, 0}, {0, 6, 0});
+  for (std::vector<Tri>* mesh : std::initializer_list<std::vector<Tri>*>{&sphere, &table, &floor})
+    for (Tri& t : *mesh)
+      for (Vec3d& x : t) x = at(x);
   OccluderTriangles occluders;
-  for (const std::vector<Tri>* solid : {&sphere, static_cast<const std::vector<Tri>*>(&table)}) {
+  for (const std::vector<Tri>* solid : {&sphere, &table}) {
     Aabb box;
     for (const Tri& t : *solid) {
       occluders.corners.push_back(t);
@@ -192,33 +200,54 @@ TEST_CASE("clusters = one search per vertex: a closed sphere over a floor, light
     }
     occluders.solid_bounds.push_back(box);
   }
-  std::vector<Tri> floor;
-  add_quad(floor, {-3, -3, 0}, {6, 0, 0}, {0, 6, 0});
   for (std::size_t i = 0; i < floor.size(); ++i) {
     occluders.corners.push_back(floor[i]);
     occluders.ids.push_back({1, static_cast<std::uint32_t>(i)});
     occluders.solid.push_back(-1);
   }
   const OccluderBvh bvh(std::move(occluders));
-  const PreparedLight<double> panel =
-      prepare_light<double>(area_source({{-0.4, -1.4, 2.6}, {-0.4, 0.6, 2.6}, {1.6, 0.6, 2.2}, {1.6, -1.4, 2.2}}));
+  const PreparedLight<double> panel = prepare_light<double>(
+      area_source({at({-0.4, -1.4, 2.6}), at({-0.4, 0.6, 2.6}), at({1.6, 0.6, 2.2}), at({1.6, -1.4, 2.2})}));
   std::vector<ShadingPoint<double>> points;
   const int n = 48;
+  const Vec3d eye = at({0.5, 0, 4});
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i)
-      points.push_back(make_shading_point(Vec3d{-1.5 + 3.0 * i / n, -1.5 + 3.0 * j / n, 0}, Vec3d{0, 0, 1},
-                                          Vec3d{0.5, 0, 4}, 12.0));
+      points.push_back(make_shading_point(at(Vec3d{-1.5 + 3.0 * i / n, -1.5 + 3.0 * j / n, 0}), Vec3d{0, 0, 1}, eye, 12.0));
   for (const Tri& t : sphere) {  // its own corners, with the face normal (every corner is a vertex of 5-6 faces)
     const Vec3d nrm = normalize(cross(t[1] - t[0], t[2] - t[0]));
-    points.push_back(make_shading_point(t[0], nrm, Vec3d{0.5, 0, 4}, 12.0));
+    points.push_back(make_shading_point(t[0], nrm, eye, 12.0));
   }
-  const ClusterAgreement a = compare_clusters(panel, points, bvh, SpecularMethod::kExact, 5);
+  return compare_clusters(panel, points, bvh, SpecularMethod::kExact, 5);
+}
+
+TEST_CASE("clusters = one search per vertex: a closed sphere over a floor, lighting its own vertices") {
+  const ClusterAgreement a = sphere_and_table_over_floor(1, {});
   report("sphere over a floor", a);
   CHECK(a.shadowed > 200);
   CHECK(a.diffuse <= 1e-12);
   CHECK(a.specular <= 1e-10);
   CHECK(a.cuts <= 1e-9);
   CHECK(a.clustered >= 0.9);
+}
+
+TEST_CASE("clusters = one search per vertex: the sphere and table scene tiny, huge and far from the origin") {
+  // The classification's margins are relative: the same scene at 1e-4 and 1e4 of its size, and
+  // 1e5 away from the origin, gives the same agreement (and is as often clustered).
+  const struct {
+    const char* name;
+    double scale;
+    Vec3d offset;
+  } cases[] = {{"scaled by 1e-4", 1e-4, {}}, {"scaled by 1e4", 1e4, {}}, {"moved by (1e5, -1e5, 1e3)", 1, {1e5, -1e5, 1e3}}};
+  for (const auto& c : cases) {
+    const ClusterAgreement a = sphere_and_table_over_floor(c.scale, c.offset);
+    report(c.name, a);
+    CHECK(a.shadowed > 200);
+    CHECK(a.diffuse <= 1e-12);
+    CHECK(a.specular <= 1e-10);
+    CHECK(a.cuts <= 1e-9);
+    CHECK(a.clustered >= 0.9);
+  }
 }
 
 TEST_CASE("clusters = one search per vertex: random soups over a dense floor, a panel and a disk") {

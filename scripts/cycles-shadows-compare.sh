@@ -43,9 +43,9 @@ grep '^blender_bake:' "$out/blender-bake.log" >&2
 
 first=$(echo "$samples" | cut -d, -f1)
 # Probe points: Cycles' corners (position, corner normal); eye and shininess do not matter for
-# the diffuse. The positions are rounded back to single precision, the glTF's own values: a
-# probe point 1e-9 off a vertex is not that vertex (its own triangles then hide it or not by the
-# side it lies on, docs/shadows.md "what a vertex sees").
+# the diffuse. Cycles writes single-precision world positions; --snap-to-vertices puts each back
+# on the vertex it stands for (exactly, also under node transforms): a probe point a rounding
+# error off a vertex is not that vertex, and its own triangles can hide the light from it.
 python3 - "$out/cycles-$first.txt" > "$out/corners.csv" <<'PY'
 import struct, sys
 single = lambda x: struct.unpack("f", struct.pack("f", float(x)))[0]
@@ -55,7 +55,9 @@ for line in open(sys.argv[1]):
     p = [single(x), single(y), single(z)]
     print(",".join(repr(v) for v in p + [nx, ny, nz, p[0] + nx, p[1] + ny, p[2] + nz, 1.0]))
 PY
-"$build/vlit" probe --lights "$lights" --points "$out/corners.csv" --occluders "$asset" --specular none > "$out/probe.csv"
+"$build/vlit" probe --lights "$lights" --points "$out/corners.csv" --occluders "$asset" --snap-to-vertices --specular none \
+  > "$out/probe.csv" 2> "$out/probe.log"
+cat "$out/probe.log" >&2
 
 : > "$out/vlit-times.txt"
 for run in 1 2 3; do

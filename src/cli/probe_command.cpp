@@ -1,8 +1,10 @@
 // vlit probe --lights LIGHTS.json --points POINTS.csv [--specular peak|neighborhood:K|exact|none]
-//            [--precision double|float] [--occluders SCENE.gltf|glb]
+//            [--precision double|float] [--occluders SCENE.gltf|glb [--snap-to-vertices]]
 // A light meter: diffuse and specular (kd = ks = 1, scalar intensities, colours ignored) summed
 // over all lights at each point, 17 significant digits. With --occluders, the triangles of SCENE
-// (all meshes, transforms applied) hide the lights that cast shadows (docs/shadows.md).
+// (all meshes, transforms applied) hide the lights that cast shadows (docs/shadows.md); with
+// --snap-to-vertices, a point a few rounding errors off a vertex is moved onto it
+// (shadow/snap_to_vertices.h).
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -15,6 +17,7 @@
 #include "scene/load_scene.h"
 #include "shading/prepared_light.h"
 #include "shadow/light_meter.h"
+#include "shadow/snap_to_vertices.h"
 
 namespace vlit::cli {
 namespace {
@@ -24,6 +27,7 @@ struct ProbeArgs {
   std::string specular = "peak";
   std::string precision = "double";
   std::string occluders;
+  bool snap_to_vertices = false;
 };
 
 template <class T>
@@ -46,13 +50,25 @@ int run_probe(const ProbeArgs& args) {
   options.specular = parse_specular(args.specular);
   options.with_specular = options.specular.method != SpecularMethod::kNone;
   const auto lights = read_lights_json(args.lights);
-  const auto points = read_points_csv(args.points);
+  auto points = read_points_csv(args.points);
+  if (args.snap_to_vertices && args.occluders.empty())
+    throw InputError(args.points, "--snap-to-vertices needs --occluders (the vertices are theirs)");
   std::optional<OccluderBvh> occluders;
   if (!args.occluders.empty()) {
     if (args.precision == "float")
       throw InputError(args.occluders, "--occluders needs --precision double (shadows are computed in double)");
     LoadedScene scene = load_scene(args.occluders, "", false);
-    occluders.emplace(occluders_of(scene.scene));
+    OccluderTriangles triangles = occluders_of(scene.scene);
+    if (args.snap_to_vertices) {
+      std::vector<Vec3d> positions;
+      for (const ProbePoint& p : points) positions.push_back(p.position);
+      const SnapCount n = snap_to_vertices(triangles, positions);
+      for (std::size_t i = 0; i < points.size(); ++i) points[i].position = positions[i];
+      std::fprintf(stderr, "probe: %zu of %zu points on a vertex of %s", n.snapped, points.size(), args.occluders.c_str());
+      if (n.ambiguous > 0) std::fprintf(stderr, "; %zu left alone (near several vertices)", n.ambiguous);
+      std::fprintf(stderr, "\n");
+    }
+    occluders.emplace(std::move(triangles));
   }
   if (args.precision == "float") probe<float>(lights, points, options, nullptr);
   else probe<double>(lights, points, options, occluders ? &*occluders : nullptr);
@@ -73,6 +89,9 @@ Runner add_probe_command(CLI::App& app) {
   cmd->add_option("--occluders", args->occluders,
                   "glTF/GLB (or OBJ, PLY, OFF, STL) whose triangles hide the lights (all meshes, transforms applied)")
       ->check(CLI::ExistingFile);
+  cmd->add_flag("--snap-to-vertices", args->snap_to_vertices,
+                "With --occluders: a point within 1e-6 of the occluders' size of one of their vertices (and of no "
+                "other) is moved exactly onto it (points written in single precision by another program)");
   cmd->footer("Output: index,diffuse,specular per point, kd = ks = 1, summed over all lights with their scalar intensity.");
   return [args] { return run_probe(*args); };
 }

@@ -130,5 +130,15 @@ TEST_CASE("vlit probe --occluders: the scene's triangles (transforms applied) hi
   const CommandResult bad = run_command(common + " --occluders '" + scene + "' --precision float");
   CHECK(bad.exit_code != 0);
   CHECK(bad.err.find("blocker.glb") != std::string::npos);
+  // --snap-to-vertices: the point is no vertex of the quad (corners (+-2, +-2, 1)), nothing moves;
+  // without --occluders it is an error naming the points file.
+  const CommandResult snapped = run_command(common + " --occluders '" + scene + "' --snap-to-vertices");
+  REQUIRE(snapped.exit_code == 0);
+  CHECK(snapped.out == hidden.out);
+  CHECK(snapped.err.find("probe: 0 of 1 points on a vertex of") != std::string::npos);
+  const CommandResult alone = run_command(common + " --snap-to-vertices");
+  CHECK(alone.exit_code != 0);
+  CHECK(alone.err.find("points.csv") != std::string::npos);
+  CHECK(alone.err.find("--snap-to-vertices needs --occluders") != std::string::npos);
   std::filesystem::remove_all(dir);
 }

@@ -274,8 +274,18 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
                          p.x <= b->hi.x && p.y >= b->lo.y && p.y <= b->hi.y && p.z >= b->lo.z && p.z <= b->hi.z;
   const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
-  if (clustered) occluders.leaves_reached(cluster->leaves, volume, slab, 2, p, s.leaves);
-  else occluders.silhouette_candidates(volume, slab, 2, p, s.candidates);
+  if (clustered && cluster->leaves.size() <= SilhouetteCluster::kFlatLeaves) {
+    occluders.leaves_reached(cluster->leaves, volume, slab, 2, p, s.leaves);
+  } else if (clustered) {
+    // P's own search, kept to the cluster's leaves: a leaf the cluster's search did not reach lies
+    // outside the cluster's hull (so outside P's volume) or faces P uniformly.
+    occluders.silhouette_leaves(volume, slab, 2, p, 0, s.candidates);
+    s.leaves.clear();
+    for (std::uint32_t node : s.candidates)
+      if (cluster->node_stamp[node] == cluster->stamp) s.leaves.push_back(cluster->leaf_position[node]);
+  } else {
+    occluders.silhouette_candidates(volume, slab, 2, p, s.candidates);
+  }
   // The pyramid's sides, inward, in the order bottom, right, top, left (project() relies on it).
   const Vec3d corner[4] = {f.center + f.u * f.rect.x0 + f.v * f.rect.y0, f.center + f.u * f.rect.x1 + f.v * f.rect.y0,
                            f.center + f.u * f.rect.x1 + f.v * f.rect.y1, f.center + f.u * f.rect.x0 + f.v * f.rect.y1};

@@ -161,17 +161,25 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
 
   const OccluderTriangles& triangles = occluders.triangles();
   const OccluderEdges& edges = occluders.edges();
-  if (cluster.facing.size() != triangles.size() || cluster.edge_stamp.size() != edges.size()) {
+  if (cluster.facing.size() != triangles.size() || cluster.edge_stamp.size() != edges.size() ||
+      cluster.node_stamp.size() != occluders.node_count()) {
     cluster.facing.assign(triangles.size(), 0);
     cluster.facing_stamp.assign(triangles.size(), 0);
     cluster.edge_stamp.assign(edges.size(), 0);
     cluster.edge_weight.assign(edges.size(), 0);
+    cluster.leaf_position.assign(occluders.node_count(), 0);
+    cluster.node_stamp.assign(occluders.node_count(), 0);
     cluster.stamp = 0;
   }
   if (++cluster.stamp == 0) {
     std::fill(cluster.facing_stamp.begin(), cluster.facing_stamp.end(), 0);
     std::fill(cluster.edge_stamp.begin(), cluster.edge_stamp.end(), 0);
+    std::fill(cluster.node_stamp.begin(), cluster.node_stamp.end(), 0);
     cluster.stamp = 1;
+  }
+  for (std::uint32_t i = 0; i < cluster.leaves.size(); ++i) {
+    cluster.leaf_position[cluster.leaves[i]] = i;
+    cluster.node_stamp[cluster.leaves[i]] = cluster.stamp;
   }
   auto facing = [&](std::uint32_t t) {
     if (cluster.facing_stamp[t] != cluster.stamp) {

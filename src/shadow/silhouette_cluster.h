@@ -14,8 +14,9 @@
 // - variable otherwise (its plane meets B, it has a corner in B, or B straddles its solid's box).
 // An edge whose incident triangles are all constant has the same weight from every point of B:
 // its weight is not computed again per vertex; an edge with a variable triangle is weighed per
-// vertex. A vertex of B searches only the cluster's leaves (a leaf outside its own volume, or
-// facing it uniformly, is skipped: OccluderBvh::leaves_reached) and in each leaf reads only the
+// vertex. A vertex of B keeps only the cluster's leaves that its own search would reach (a leaf
+// outside its own volume, or facing it uniformly, is skipped: OccluderBvh::leaves_reached, or its
+// own search when the cluster has many leaves) and in each of them reads only the
 // edges whose weight over B is not 0 and the triangles that may leave its slab; the rest of the
 // leaf adds nothing to its silhouette (an edge between two triangles that face B the same way
 // weighs 0 from every point of B).
@@ -58,6 +59,11 @@ struct SilhouetteCluster {
   // not wholly inside the slab of every vertex): their chords.
   std::vector<std::uint32_t> weighed_edges, chord_triangles;
   std::vector<std::uint32_t> edges_begin, chords_begin;
+  // Per BVH node, its position in `leaves` where node_stamp is the cluster's stamp: a vertex of a
+  // cluster with more than kFlatLeaves leaves finds the ones it reaches by its own search, which
+  // prunes whole subtrees, instead of testing every leaf of the cluster.
+  static constexpr std::size_t kFlatLeaves = 4096;
+  std::vector<std::uint32_t> leaf_position, node_stamp;
   std::vector<std::int8_t> facing, edge_weight;
   std::vector<std::uint32_t> facing_stamp, edge_stamp;
   std::uint32_t stamp = 0;

@@ -177,10 +177,6 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
     std::fill(cluster.node_stamp.begin(), cluster.node_stamp.end(), 0);
     cluster.stamp = 1;
   }
-  for (std::uint32_t i = 0; i < cluster.leaves.size(); ++i) {
-    cluster.leaf_position[cluster.leaves[i]] = i;
-    cluster.node_stamp[cluster.leaves[i]] = cluster.stamp;
-  }
   auto facing = [&](std::uint32_t t) {
     if (cluster.facing_stamp[t] != cluster.stamp) {
       cluster.facing_stamp[t] = cluster.stamp;
@@ -218,9 +214,12 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   cluster.chord_triangles.clear();
   cluster.edges_begin.clear();
   cluster.chords_begin.clear();
+  // A leaf with neither kind of item adds nothing for any vertex of B: it is dropped, so the
+  // vertices do not test it.
+  std::size_t kept = 0;
   for (std::size_t i = 0; i < cluster.leaves.size(); ++i) {
-    cluster.edges_begin.push_back(static_cast<std::uint32_t>(cluster.weighed_edges.size()));
-    cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_triangles.size()));
+    const std::uint32_t edges_before = static_cast<std::uint32_t>(cluster.weighed_edges.size());
+    const std::uint32_t chords_before = static_cast<std::uint32_t>(cluster.chord_triangles.size());
     for (std::uint32_t c = candidates_begin[i]; c < candidates_begin[i + 1]; ++c) {
       const std::uint32_t t = cluster.candidates[c];
       if (facing(t) != 0 && !inside_every_slab(t)) cluster.chord_triangles.push_back(t);
@@ -229,7 +228,14 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
         if (weight_over_box(e) != 0) cluster.weighed_edges.push_back(e);
       }
     }
+    if (cluster.weighed_edges.size() == edges_before && cluster.chord_triangles.size() == chords_before) continue;
+    cluster.edges_begin.push_back(edges_before);
+    cluster.chords_begin.push_back(chords_before);
+    cluster.leaf_position[cluster.leaves[i]] = static_cast<std::uint32_t>(kept);
+    cluster.node_stamp[cluster.leaves[i]] = cluster.stamp;
+    cluster.leaves[kept++] = cluster.leaves[i];
   }
+  cluster.leaves.resize(kept);
   cluster.edges_begin.push_back(static_cast<std::uint32_t>(cluster.weighed_edges.size()));
   cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_triangles.size()));
 }

@@ -50,7 +50,7 @@ struct SilhouetteCluster {
   // the triangle's facing over B (+1, -1, 0, or kVariable) and the edge's weight over B (or
   // kVariable).
   static constexpr int kVariable = 100;
-  std::vector<std::uint32_t> leaves;  // the BVH leaves the cluster's search reached
+  std::vector<std::uint32_t> leaves;  // the BVH leaves the cluster's search reached that hold an item (below)
   std::vector<std::uint32_t> candidates, candidates_begin;  // leaves[i]'s: [begin[i], begin[i + 1])
   // What a vertex of B reads instead of its candidates, per leaf (leaves[i]'s items are
   // [edges_begin[i], edges_begin[i + 1]) and the same for chords): the edges of the leaf's

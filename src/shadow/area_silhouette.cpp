@@ -191,7 +191,6 @@ int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaS
   const double plane_tol = kRayAmbiguity * (f.height + (f.rect.x1 - f.rect.x0) + (f.rect.y1 - f.rect.y0));
   int count = 0;
   for (std::uint32_t t : s.ray_candidates) {
-    if (facing_of(triangles, t, f.p, s) == 0) continue;
     const auto& c = triangles.corners[t];
     bool outside = false;  // wholly outside the slab: not counted, whatever the crossing test says
     for (const HalfSpace* h : {&f.slab.beyond_light, &f.slab.before_p})
@@ -211,6 +210,9 @@ int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaS
     if (!(t_hit > 0 && t_hit < 1)) continue;
     const double margin = std::min({b0, b1, b2});
     if (margin < -kRayAmbiguity) continue;
+    // A triangle that hides nothing from P (facing_of 0) is not counted, and is not ambiguous:
+    // asked only of the triangles the ray meets.
+    if (facing_of(triangles, t, f.p, s) == 0) continue;
     const Vec3d hit = f.p + dir * t_hit;
     const double d0 = f.slab.beyond_light.signed_distance(hit), d1 = f.slab.before_p.signed_distance(hit);
     if (d0 < -plane_tol || d1 < -plane_tol) continue;

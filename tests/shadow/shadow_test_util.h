@@ -86,4 +86,38 @@ inline std::vector<Tri> icosphere(const Vec3d& center, double radius, int levels
   return tris;
 }
 
+// A height field z = amplitude sin(3x) cos(2.5y) + 0.1x over [-1.5, 1.5]^2 on an n x n grid: its
+// triangles, and its grid points as shading points (analytic normal, eye (0, 0, 5), m = 10).
+struct BumpySurface {
+  std::vector<Tri> tris;
+  std::vector<ShadingPoint<double>> points;
+};
+
+inline BumpySurface bumpy_surface(int n, double amplitude) {
+  auto height = [&](double x, double y) { return amplitude * std::sin(3 * x) * std::cos(2.5 * y) + 0.1 * x; };
+  std::vector<Vec3d> grid;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = -1.5 + 3.0 * i / n, y = -1.5 + 3.0 * j / n;
+      grid.push_back({x, y, height(x, y)});
+    }
+  BumpySurface s;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const Vec3d& a = grid[j * (n + 1) + i];
+      const Vec3d& b = grid[j * (n + 1) + i + 1];
+      const Vec3d& c = grid[(j + 1) * (n + 1) + i + 1];
+      const Vec3d& d = grid[(j + 1) * (n + 1) + i];
+      s.tris.push_back({a, b, c});
+      s.tris.push_back({a, c, d});
+    }
+  for (const Vec3d& p : grid) {
+    const double e = 1e-4;
+    const Vec3d dx{2 * e, 0, height(p.x + e, p.y) - height(p.x - e, p.y)};
+    const Vec3d dy{0, 2 * e, height(p.x, p.y + e) - height(p.x, p.y - e)};
+    s.points.push_back(make_shading_point(p, normalize(cross(dx, dy)), Vec3d{0, 0, 5}, 10.0));
+  }
+  return s;
+}
+
 }  // namespace vlit::test

@@ -134,32 +134,9 @@ TEST_CASE("clusters = one search per vertex: a surface shadowing its own vertice
   // clusters.
   const PreparedLight<double> panel =
       prepare_light<double>(area_source({{0.1, -0.7, 0.9}, {0.1, 0.7, 0.9}, {-0.2, 0.7, 1.6}, {-0.2, -0.7, 1.6}}, true));
-  const int n = 40;
-  auto height = [](double x, double y) { return 0.35 * std::sin(3 * x) * std::cos(2.5 * y) + 0.1 * x; };
-  std::vector<Vec3d> grid;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double x = -1.5 + 3.0 * i / n, y = -1.5 + 3.0 * j / n;
-      grid.push_back({x, y, height(x, y)});
-    }
-  std::vector<Tri> tris;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const Vec3d& a = grid[j * (n + 1) + i];
-      const Vec3d& b = grid[j * (n + 1) + i + 1];
-      const Vec3d& c = grid[(j + 1) * (n + 1) + i + 1];
-      const Vec3d& d = grid[(j + 1) * (n + 1) + i];
-      tris.push_back({a, b, c});
-      tris.push_back({a, c, d});
-    }
-  const OccluderBvh bvh = make_bvh(tris);
-  std::vector<ShadingPoint<double>> points;
-  for (const Vec3d& p : grid) {
-    const double e = 1e-4;
-    const Vec3d dx{2 * e, 0, height(p.x + e, p.y) - height(p.x - e, p.y)};
-    const Vec3d dy{0, 2 * e, height(p.x, p.y + e) - height(p.x, p.y - e)};
-    points.push_back(make_shading_point(p, normalize(cross(dx, dy)), Vec3d{0, 0, 5}, 10.0));
-  }
+  const BumpySurface surface = bumpy_surface(40, 0.35);
+  const OccluderBvh bvh = make_bvh(surface.tris);
+  const std::vector<ShadingPoint<double>>& points = surface.points;
   const ClusterAgreement a = compare_clusters(panel, points, bvh, SpecularMethod::kExact, 7);
   report("bumpy surface", a);
   CHECK(a.shadowed > 100);

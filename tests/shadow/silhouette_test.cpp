@@ -150,33 +150,10 @@ TEST_CASE("silhouettes = triangle cuts: a bumpy surface shadowing its own vertic
   // self-shadowing.
   const PreparedLight<double> panel = prepare_light<double>(
       area_source({{2.4, -0.6, 0.3}, {2.4, 0.6, 0.3}, {2.7, 0.6, 1.2}, {2.7, -0.6, 1.2}}, true));
-  const int n = 14;
-  auto height = [](double x, double y) { return 0.4 * std::sin(3 * x) * std::cos(2.5 * y) + 0.1 * x; };
-  std::vector<Vec3d> grid;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double x = -1.5 + 3.0 * i / n, y = -1.5 + 3.0 * j / n;
-      grid.push_back({x, y, height(x, y)});
-    }
-  std::vector<Tri> tris;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const Vec3d& a = grid[j * (n + 1) + i];
-      const Vec3d& b = grid[j * (n + 1) + i + 1];
-      const Vec3d& c = grid[(j + 1) * (n + 1) + i + 1];
-      const Vec3d& d = grid[(j + 1) * (n + 1) + i];
-      tris.push_back({a, b, c});
-      tris.push_back({a, c, d});
-    }
-  const OccluderBvh bvh = make_bvh(tris);
+  const BumpySurface surface = bumpy_surface(14, 0.4);
+  const OccluderBvh bvh = make_bvh(surface.tris);
+  const std::vector<ShadingPoint<double>>& points = surface.points;
   Agreement agree;
-  std::vector<ShadingPoint<double>> points;
-  for (const Vec3d& p : grid) {
-    const double e = 1e-4;
-    const Vec3d dx{2 * e, 0, height(p.x + e, p.y) - height(p.x - e, p.y)};
-    const Vec3d dy{0, 2 * e, height(p.x, p.y + e) - height(p.x, p.y - e)};
-    points.push_back(make_shading_point(p, normalize(cross(dx, dy)), Vec3d{0, 0, 5}, 10.0));
-  }
   for (const auto& sp : points) compare(panel, sp, bvh, SpecularMethod::kExact, agree);
   const double decided = decided_fraction(area_of(panel), points, bvh);
   MESSAGE("bumpy surface: " << agree.shadowed << " of " << agree.cases << " shadowed; diffuse " << agree.diffuse

@@ -68,13 +68,35 @@ bool box_outside_unit(const Aabb& box, const HalfSpace& h) {
   return dot(h.normal, w) < -2e-9 * scale;
 }
 
-// The box lies wholly inside the half-space, with the same kind of margin.
-bool box_inside(const Aabb& box, const HalfSpace& h) {
+// The box lies wholly inside the half-space (unit normal), with the same kind of margin.
+bool box_inside_unit(const Aabb& box, const HalfSpace& h) {
   const Vec3d near{h.normal.x >= 0 ? box.lo.x : box.hi.x, h.normal.y >= 0 ? box.lo.y : box.hi.y,
                    h.normal.z >= 0 ? box.lo.z : box.hi.z};
   const Vec3d w = near - h.origin;
-  return dot(h.normal, w) > 1e-9 * length(h.normal) * (length(w) + length(box.hi - box.lo));
+  const Vec3d e = box.hi - box.lo;
+  const double scale = std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z)}) + std::max({e.x, e.y, e.z});
+  return dot(h.normal, w) > 2e-9 * scale;
 }
+
+// The `inside` planes of the silhouette searches with unit normals; more than 4 are never held
+// (no subtree is skipped as uniform: conservative).
+struct UnitHalfSpaces {
+  HalfSpace h[4];
+  int count = 0;
+  bool too_many = false;
+  UnitHalfSpaces(const HalfSpace* planes, int n) : too_many(n > 4) {
+    for (int k = 0; k < n && k < 4; ++k) {
+      const double len = length(planes[k].normal);
+      h[count++] = {len > 0 ? planes[k].normal / len : Vec3d{}, planes[k].origin};
+    }
+  }
+  bool hold(const Aabb& box) const {
+    if (too_many) return false;
+    for (int k = 0; k < count; ++k)
+      if (!box_inside_unit(box, h[k])) return false;
+    return true;
+  }
+};
 
 }  // namespace
 
@@ -317,11 +339,8 @@ void OccluderBvh::silhouette_candidates(const ConvexVolume& volume, const HalfSp
     return;
   }
   // A subtree that faces p uniformly and that no plane of `inside` cuts carries no silhouette.
-  auto uniform = [&](std::uint32_t node) {
-    for (int k = 0; k < inside_count; ++k)
-      if (!box_inside(nodes_[node].box, inside[k])) return false;
-    return faces_uniformly(node, p, p_radius);
-  };
+  const UnitHalfSpaces slab(inside, inside_count);
+  auto uniform = [&](std::uint32_t node) { return slab.hold(nodes_[node].box) && faces_uniformly(node, p, p_radius); };
   visit_volume(volume, uniform, [&](std::uint32_t node) {
     for (std::uint32_t i = nodes_[node].first; i < nodes_[node].first + nodes_[node].count; ++i)
       if (near_volume(order_[i], volume)) out.push_back(order_[i]);
@@ -333,11 +352,8 @@ void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace*
                                     const Vec3d& p, double p_radius, std::vector<std::uint32_t>& leaves) const {
   leaves.clear();
   if (brute_force_ || nodes_.empty()) return;
-  auto uniform = [&](std::uint32_t node) {
-    for (int k = 0; k < inside_count; ++k)
-      if (!box_inside(nodes_[node].box, inside[k])) return false;
-    return faces_uniformly(node, p, p_radius);
-  };
+  const UnitHalfSpaces slab(inside, inside_count);
+  auto uniform = [&](std::uint32_t node) { return slab.hold(nodes_[node].box) && faces_uniformly(node, p, p_radius); };
   visit_volume(volume, uniform, [&](std::uint32_t node) { leaves.push_back(node); });
   std::sort(leaves.begin(), leaves.end(), [&](std::uint32_t a, std::uint32_t b) { return nodes_[a].first < nodes_[b].first; });
 }
@@ -346,6 +362,7 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
                                  const HalfSpace* inside, int inside_count, const Vec3d& p,
                                  std::vector<std::uint32_t>& out) const {
   out.clear();
+  const UnitHalfSpaces slab(inside, inside_count);
   const Aabb query = padded(volume.box);
   HalfSpace planes[16];  // unit normals, as visit_volume
   const int plane_count = std::min<int>(16, static_cast<int>(volume.planes.size()));
@@ -359,9 +376,7 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
     bool outside = false;
     for (int k = 0; k < plane_count && !outside; ++k) outside = box_outside_unit(box, planes[k]);
     if (outside) continue;
-    bool inside_all = true;
-    for (int k = 0; k < inside_count && inside_all; ++k) inside_all = box_inside(box, inside[k]);
-    if (inside_all && faces_uniformly(leaves[i], p, 0)) continue;
+    if (slab.hold(box) && faces_uniformly(leaves[i], p, 0)) continue;
     out.push_back(i);
   }
 }

@@ -98,6 +98,27 @@ def main():
     for samples, seconds, largest, p999, p99, rms, kept_max, kept_p999 in rows:
         print("| %d | %.2f | %.2e | %.2e | %.2e | %.2e | %.1f | %.2e | %.2e |"
               % (samples, seconds, largest, p999, p99, rms, seconds / vlit_time, kept_max, kept_p999))
+    write_plot(out, name, rows, vlit_time)
+
+
+def write_plot(out, name, rows, vlit_time):
+    """DIR/plot.gp: Cycles' errors against its time over vlit's (log-log), for gnuplot."""
+    with open(os.path.join(out, "plot.gp"), "w") as f:
+        f.write("set terminal pngcairo size 720,480 font ',10'\n")
+        f.write("set output 'cycles-vs-vlit.png'\n")
+        f.write("set title \"%s: Cycles with shadows against vlit's exact shadows (one thread each)\"\n" % name)
+        f.write("set logscale xy\nset grid\nset key top right\n")
+        f.write("set xlabel \"Cycles' time / vlit's time (samples 1 ... %d)\"\n" % rows[-1][0])
+        f.write("set ylabel 'error / largest vlit value'\n")
+        f.write("set arrow from 1, graph 0 to 1, graph 1 nohead dashtype 2\n")
+        f.write("set label \"vlit: exact, at its time\" at 1, graph 0.05 offset 0.5, 0\n")
+        columns = [(6, "largest, away from poles"), (7, "99.9th percentile, away from poles"), (4, "99th percentile"),
+                   (5, "RMS")]  # indices into a row of main()
+        f.write("plot " + ", \\\n     ".join("'-' using 1:2 with linespoints title '%s'" % t for _, t in columns) + "\n")
+        for column, _ in columns:
+            for row in rows:
+                f.write("%.6g %.6g\n" % (row[1] / vlit_time, row[column]))
+            f.write("e\n")
 
 
 if __name__ == "__main__":

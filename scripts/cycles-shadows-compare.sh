@@ -7,10 +7,11 @@
 #
 # 1. Cycles bakes ASSET under LIGHTS.json with shadows on (bench/blender_bake.py --shadows; white
 #    diffuse, direct light, one thread), samples VLIT_CYCLES_SAMPLES (default 1,4,16,64,256);
-# 2. vlit probe --occluders ASSET computes the exact shadowed diffuse at Cycles' face corners;
+# 2. vlit probe --occluders ASSET --snap-to-vertices computes the exact shadowed diffuse at
+#    Cycles' face corners;
 # 3. vlit bake --shadows on (one thread, three runs) gives vlit's time for the whole asset;
-# 4. bench/cycles_shadow_errors.py prints the table: Cycles' error against vlit per sample count,
-#    and the time ratio.
+# 4. bench/cycles_shadow_errors.py prints the table (Cycles' error against vlit per sample count,
+#    and the time ratio) and writes plot.gp, drawn into OUT_DIR/cycles-vs-vlit.png by gnuplot.
 # Exit status 3 when blender is not installed (nothing written).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -67,3 +68,8 @@ for run in 1 2 3; do
     | sed -n 's/^time: .*light \([0-9.]*\) s.*/\1/p' >> "$out/vlit-times.txt"
 done
 python3 bench/cycles_shadow_errors.py "$out" "$name" | tee "$out/table.md"
+if command -v gnuplot >/dev/null; then
+  (cd "$out" && gnuplot plot.gp) && echo "cycles-shadows-compare: plot in $out/cycles-vs-vlit.png" >&2
+else
+  echo "cycles-shadows-compare: gnuplot not found, $out/plot.gp not drawn (Debian: apt-get install gnuplot-nox)" >&2
+fi

@@ -105,8 +105,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   const double grow = kSilhouetteRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light.radius});
   const Rect2 r{tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
   // A cluster wider than the light sweeps a hull much larger than any of its vertices' pyramids:
-  // its lists would hold far more than each vertex needs (shadow_bench part 3b: 16 receivers over
-  // a 2 x 2 square under a sphere cost 2-3x their own searches). Its vertices search alone.
+  // its lists would hold far more than each vertex needs. Its vertices search alone.
   if (length(box.hi - box.lo) > kWidestCluster * std::hypot(r.x1 - r.x0, r.y1 - r.y0)) return;
   const Vec3d rect[4] = {light.center + u * r.x0 + v * r.y0, light.center + u * r.x1 + v * r.y0,
                          light.center + u * r.x1 + v * r.y1, light.center + u * r.x0 + v * r.y1};

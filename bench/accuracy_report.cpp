@@ -43,7 +43,7 @@
 #include "bake/vertex_color_bake.h"
 #include "disk_light.h"
 #include "linear_light.h"
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 #include "scene/material.h"
 
 namespace vlit::bench {
@@ -1022,7 +1022,7 @@ CyclesComparison cycles_comparison(const Options& o) {
     out.md = md.str();
     return out;
   }
-  LoadedScene loaded = load_scene(o.asset, lights_path.string(), false);
+  LoadedScene loaded = load_scene(o.asset, lights_path.string(), {SceneLimits{}, false});
   Scene& scene = loaded.scene;
   const CyclesData cy = read_cycles(o.blender_dir, scene);
   if (!cy.available) {
@@ -1194,7 +1194,7 @@ EndToEnd end_to_end(const Options& o) {
     e.md = "Skipped: asset `" + o.asset + "` not found.\n";
     return e;
   }
-  LoadedScene loaded = load_scene(o.asset, "", false);
+  LoadedScene loaded = load_scene(o.asset, "", {SceneLimits{}, false});
   Scene& scene = loaded.scene;
   // Lights placed around the asset's bounding box.
   const auto [lo, hi] = scene_box(scene);
@@ -1751,7 +1751,7 @@ int main(int argc, char** argv) {
   }
   if (!write_lights.empty()) {  // the comparison lights for bench/blender_bake.py, then stop
     try {
-      const vlit::LoadedScene loaded = vlit::load_scene(o.asset, "", false);
+      const vlit::LoadedScene loaded = vlit::load_scene(o.asset, "", {vlit::SceneLimits{}, false});
       const std::string text = lights_json(blender_comparison_lights(loaded.scene));
       std::ofstream f(write_lights);
       f << text;

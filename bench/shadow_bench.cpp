@@ -35,7 +35,7 @@
 
 #include "bake/light_vertices.h"
 #include "shadow/shadowed_vertices.h"
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 #include "scene/material.h"
 #include "shadow/occluder_bvh.h"
 #include "shadow/shadowed_light.h"
@@ -113,7 +113,7 @@ double shadow_ray_diffuse(const LightSource& light, const ShadingPoint<double>& 
 
 void bowling(const std::string& scene_path, const std::string& lights_path, bool quick, bool part1, bool part2,
              bool with_cuts) {
-  LoadedScene loaded = load_scene(scene_path, lights_path, false);
+  LoadedScene loaded = load_scene(scene_path, lights_path, {SceneLimits{}, false});
   Scene& scene = loaded.scene;
   std::printf("## 1. %s with %s: whole vertex loop (%zu vertices, %zu lights, all cores)\n\n", scene_path.c_str(),
               lights_path.c_str(), scene.vertex_count(), scene.lights.size());

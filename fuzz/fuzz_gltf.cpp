@@ -48,18 +48,15 @@ std::vector<vlit::LightSource> fuzz_lights() {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  // The scene's vertex cap, scaled down so that the fuzzer's 2 GB malloc limit finds allocations
-  // that the cap does not bound (the default 50 M vertices needs ~3 GB by design).
-  vlit::set_default_scene_limits({/*max_vertices=*/1u << 20});
-  return 0;
-}
+// The scene's vertex cap, scaled down so that the fuzzer's 2 GB malloc limit finds allocations
+// that the cap does not bound (the default 50 M vertices needs ~3 GB by design).
+const vlit::SceneOptions kFuzzSceneOptions{vlit::SceneLimits{/*max_vertices=*/1u << 20}, true};
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
     vlit::GltfFile file = vlit::load_gltf_from_memory({reinterpret_cast<const char*>(data), size}, "fuzz.glb");
     std::vector<std::string> warnings;
-    vlit::Scene scene = vlit::build_scene(file, warnings);
+    vlit::Scene scene = vlit::build_scene(file, warnings, kFuzzSceneOptions);
     scene.lights = fuzz_lights();
     vlit::LightingRequest request;
     request.shade.with_specular = false;

@@ -69,7 +69,7 @@ BakeSummary bake(tinygltf::Model& model, const Lights& lights, const BakeSetting
       ~GiveBack() { to = std::move(from.model); }
     } give_back{model, file};
     std::vector<std::string> warnings;
-    Scene scene = build_scene(file, warnings, api::scene_limits(settings), settings.file_lights);
+    Scene scene = build_scene(file, warnings, {api::scene_limits(settings), settings.file_lights});
     scene.lights.insert(scene.lights.end(), lights.impl().sources.begin(), lights.impl().sources.end());
     if (scene.lights.empty()) warnings.push_back(name + ": no lights; the bake is black");
     const LightingRequest request = bake_request(settings);

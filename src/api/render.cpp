@@ -88,7 +88,7 @@ Image render(const tinygltf::Model& model, const Lights& lights, const RenderSet
     file.path = name;
     file.model = model;
     std::vector<std::string> warnings;
-    Scene scene = build_scene(file, warnings, api::scene_limits(settings), settings.file_lights);
+    Scene scene = build_scene(file, warnings, {api::scene_limits(settings), settings.file_lights});
     file.model = tinygltf::Model();  // the buffers are not needed any more
     return render_scene(scene, lights, settings, name);
   });

@@ -7,7 +7,7 @@
 #include "core/input_error.h"
 #include "gltf/gltf_writer.h"
 #include "gltf/mesh_to_gltf.h"
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 
 namespace vlit {
 namespace {
@@ -25,8 +25,7 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   auto t = Clock::now();
-  LoadedScene loaded =
-      load_scene(input, options.lights_path, options.use_file_lights, options.limits.value_or(default_scene_limits()));
+  LoadedScene loaded = load_scene(input, options.lights_path, {options.limits, options.use_file_lights});
   loaded.scene.lights.insert(loaded.scene.lights.end(), options.lights.begin(), options.lights.end());
   // A mesh file (OBJ, PLY, OFF, STL) becomes a new glTF document holding its meshes.
   tinygltf::Model model = loaded.gltf ? std::move(loaded.gltf->model) : gltf_from_mesh_scene(loaded.scene);

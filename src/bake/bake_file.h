@@ -16,8 +16,8 @@ namespace vlit {
 struct BakeFileOptions {
   std::string lights_path;        // LIGHTS.json, may be empty
   std::vector<LightSource> lights;  // added after those of lights_path (the library API, src/api/)
-  std::optional<SceneLimits> limits;  // empty = default_scene_limits()
-  bool use_file_lights = true;    // keep the asset's KHR_lights_punctual lights
+  SceneLimits limits;             // --max-vertices, --max-emissive-lights
+  bool use_file_lights = true;    // keep the lights stored in the asset (docs/gltf-lights.md)
   bool float_batch = true;        // diffuse in the float SIMD batch kernels where they apply (LightingRequest)
   bool shadows = false;           // --shadows on (docs/shadows.md)
   bool embed_images = true;       // a .glb output embeds the input's image files (--keep-image-links: false)

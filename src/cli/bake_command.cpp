@@ -82,6 +82,7 @@ BakeFileOptions file_options(const BakeArgs& args) {
   o.specular = parse_specular(args.specular);
   o.lights_path = args.lights;
   o.use_file_lights = !args.no_file_lights;
+  o.limits = {args.max_vertices, args.max_emissive_lights};
   o.shadows = args.shadows == "on";
   o.embed_images = !args.keep_image_links;
   o.encode.exposure = args.exposure;
@@ -245,7 +246,6 @@ int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeF
 }
 
 int run_bake(const BakeArgs& args) {
-  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
   install_interrupt_handlers();
   std::vector<BatchInput> inputs;
   bool batch = args.inputs.size() > 1 || !args.shard.empty();

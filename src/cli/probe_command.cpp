@@ -14,7 +14,7 @@
 #include "core/input_error.h"
 #include "io/lights_json.h"
 #include "io/points_csv.h"
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 #include "shading/prepared_light.h"
 #include "shadow/light_meter.h"
 #include "shadow/snap_to_vertices.h"
@@ -57,7 +57,7 @@ int run_probe(const ProbeArgs& args) {
   if (!args.occluders.empty()) {
     if (args.precision == "float")
       throw InputError(args.occluders, "--occluders needs --precision double (shadows are computed in double)");
-    LoadedScene scene = load_scene(args.occluders, "", false);
+    LoadedScene scene = load_scene(args.occluders, "", {SceneLimits{}, false});
     OccluderTriangles triangles = occluders_of(scene.scene);
     if (args.snap_to_vertices) {
       std::vector<Vec3d> positions;

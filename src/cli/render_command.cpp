@@ -15,7 +15,7 @@
 #include "gltf/gltf_scene.h"
 #include "raster/raster.h"
 #include "raster/scene_camera.h"
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 
 namespace vlit::cli {
 namespace {
@@ -70,8 +70,8 @@ int run_render(const RenderArgs& args) {
     throw InputError(args.output, std::to_string(args.width) + " x " + std::to_string(args.height) +
                                       " pixels exceed the limit of " + std::to_string(args.max_pixels) +
                                       " (raise it with --max-pixels)");
-  set_default_scene_limits({args.max_vertices, args.max_emissive_lights});
-  LoadedScene loaded = load_scene(args.input, args.lights, !args.no_file_lights);
+  LoadedScene loaded =
+      load_scene(args.input, args.lights, {{args.max_vertices, args.max_emissive_lights}, !args.no_file_lights});
   for (const auto& w : loaded.warnings) print_warning(w);
   loaded.gltf.reset();  // the glTF document (with its buffers) is for bake's output, not needed here
   const Scene& scene = loaded.scene;

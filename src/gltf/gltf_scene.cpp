@@ -55,8 +55,6 @@ bool finite_affine(const Affine& a) {
 
 Vec3d vec3_at(const std::vector<double>& data, std::size_t i) { return {data[3 * i], data[3 * i + 1], data[3 * i + 2]}; }
 
-SceneLimits g_default_limits;
-
 std::string limit_message(const char* what, std::size_t limit) {
   return std::string("the scene needs more than ") + std::to_string(limit) + " " + what +
          " (the limit that protects the machine; raise it with --max-vertices)";
@@ -377,19 +375,12 @@ std::vector<std::uint32_t> triangle_list(int mode, const std::vector<std::uint32
   return tris;
 }
 
-void set_default_scene_limits(const SceneLimits& limits) { g_default_limits = limits; }
-SceneLimits default_scene_limits() { return g_default_limits; }
+SceneLimits default_scene_limits() { return SceneLimits{}; }
 
-Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings) {
-  return build_scene(file, warnings, g_default_limits);
-}
-
-Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits) {
-  return build_scene(file, warnings, limits, true);
-}
-
-Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits, bool file_lights) {
+Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneOptions& options) {
   const tinygltf::Model& model = file.model;
+  const bool file_lights = options.file_lights;
+  const SceneLimits& limits = options.limits;
   BuildState state(limits);
   state.file_lights = file_lights;
   Scene scene;

@@ -24,21 +24,25 @@ struct SceneLimits {
   static constexpr std::size_t kCornersPerVertex = 6;
 };
 
-// The limits build_scene uses when none are passed; the command line sets them from
-// --max-vertices before loading anything (one process, one setting).
-void set_default_scene_limits(const SceneLimits& limits);
+// SceneLimits{}: the defaults of --max-vertices and --max-emissive-lights. Nothing changes them:
+// a caller with other limits passes them (SceneOptions, load_mesh_file).
 SceneLimits default_scene_limits();
+
+// How build_scene (and load_scene, load/load_scene.h) reads an asset.
+struct SceneOptions {
+  SceneLimits limits;
+  // false ignores every light of the file (KHR_lights_punctual, EXT_lights_area,
+  // VLIT_lights_linear, emissive geometry) without reading it; emissive lines are then skipped.
+  bool file_lights = true;
+};
 
 // Throws InputError for a malformed asset (bad accessors, indices out of range, node cycles,
 // malformed light extensions) or one beyond `limits`. Primitives that cannot be lit (points,
 // non-emissive lines, missing POSITION) are skipped with a warning appended to `warnings`.
 // Lights of the file: KHR_lights_punctual, EXT_lights_area (gltf_area_lights.h),
-// VLIT_lights_linear (gltf_linear_lights.h) and emissive geometry (emissive_lights.h).
-// file_lights = false ignores every light of the file (KHR_lights_punctual, EXT_lights_area,
-// VLIT_lights_linear, emissive geometry) without reading it; emissive lines are then skipped.
-Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits);
-Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneLimits& limits, bool file_lights);
-Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings);
+// VLIT_lights_linear (gltf_linear_lights.h) and emissive geometry (emissive_lights.h), unless
+// options.file_lights is false.
+Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneOptions& options = {});
 
 // glTF primitive modes TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN as a triangle list (3 indices per
 // triangle, consistent winding); `indices` are the primitive's vertex indices in draw order.

@@ -74,12 +74,12 @@ TEST_CASE("vertex limit: counted over every instance, checked before reading") {
   const int mesh = b.add_mesh(positions, {}, {});
   b.add_node(mesh);
   std::vector<std::string> warnings;
-  CHECK(build_scene(as_file(b.model()), warnings, SceneLimits{1000}).primitives.size() == 1);
+  CHECK(build_scene(as_file(b.model()), warnings, {SceneLimits{1000}, true}).primitives.size() == 1);
   b.add_node(mesh, {1, 0, 0});  // a second instance: 1200 vertices in all
-  const std::string error = input_error_of([&] { build_scene(as_file(b.model()), warnings, SceneLimits{1000}); });
+  const std::string error = input_error_of([&] { build_scene(as_file(b.model()), warnings, {SceneLimits{1000}, true}); });
   CHECK(error.find("limits.gltf") != std::string::npos);
   CHECK(error.find("--max-vertices") != std::string::npos);
-  CHECK(build_scene(as_file(b.model()), warnings, SceneLimits{1200}).primitives.size() == 2);
+  CHECK(build_scene(as_file(b.model()), warnings, {SceneLimits{1200}, true}).primitives.size() == 2);
 }
 
 TEST_CASE("vertex limit: a POSITION accessor without bufferView and a huge count is refused, not allocated") {
@@ -101,7 +101,7 @@ TEST_CASE("triangle corner limit: an index accessor far larger than the vertices
   idx.bufferView = -1;
   idx.count = std::size_t(1) << 40;
   std::vector<std::string> warnings;
-  CHECK(input_error_of([&] { build_scene(as_file(b.model()), warnings, SceneLimits{1000}); }).find("corners") != std::string::npos);
+  CHECK(input_error_of([&] { build_scene(as_file(b.model()), warnings, {SceneLimits{1000}, true}); }).find("corners") != std::string::npos);
 }
 
 TEST_CASE("a NORMAL accessor whose count differs from POSITION is refused before it is read") {

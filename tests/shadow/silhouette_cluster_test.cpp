@@ -13,7 +13,7 @@
 #include <cmath>
 #include <random>
 
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 #include "shadow/silhouette_cluster.h"
 #include "shadow/shadowed_vertices.h"
 #include "shadow_test_util.h"
@@ -93,7 +93,7 @@ void report(const char* name, const ClusterAgreement& a) {
 
 TEST_CASE("clusters = one search per vertex: the paper's bowling lane, every vertex under its 3 panels") {
   const LoadedScene loaded = load_scene(std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling.glb",
-                                        std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling-area.json", false);
+                                        std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling-area.json", {SceneLimits{}, false});
   const Scene& scene = loaded.scene;
   REQUIRE(scene.lights.size() == 3);
   const OccluderBvh bvh(occluders_of(scene));

@@ -10,7 +10,7 @@
 #include <map>
 #include <random>
 
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 #include "shadow/area_silhouette.h"
 #include "shadow_test_util.h"
 
@@ -237,7 +237,7 @@ TEST_CASE("silhouettes = triangle cuts on the paper's bowling lane (assets/paper
   // standing on the floor (occluders at the receivers' level), 57264 triangles. Every 5th vertex
   // under each of the three panels.
   const LoadedScene loaded = load_scene(std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling.glb",
-                                        std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling-area.json", false);
+                                        std::string(VLIT_SOURCE_DIR) + "/assets/paper/bowling-area.json", {SceneLimits{}, false});
   const Scene& scene = loaded.scene;
   REQUIRE(scene.lights.size() == 3);
   const OccluderBvh bvh(occluders_of(scene));

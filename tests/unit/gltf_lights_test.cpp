@@ -50,7 +50,7 @@ Scene load(GltfBuilder& b, const std::string& name, std::vector<std::string>* wa
   const auto dir = vlit::test::temp_dir(name);
   const std::string path = b.write((dir / "scene.glb").string());
   std::vector<std::string> warnings;
-  Scene s = build_scene(load_gltf_file(path), warnings, limits, file_lights);
+  Scene s = build_scene(load_gltf_file(path), warnings, {limits, file_lights});
   if (warnings_out) *warnings_out = warnings;
   return s;
 }

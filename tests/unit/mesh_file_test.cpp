@@ -4,7 +4,7 @@
 
 #include "core/input_error.h"
 #include "mesh/mesh_file.h"
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 #include "support/gltf_builder.h"
 
 using namespace vlit;

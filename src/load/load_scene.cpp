@@ -1,4 +1,4 @@
-#include "scene/load_scene.h"
+#include "load/load_scene.h"
 
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
@@ -7,23 +7,18 @@
 
 namespace vlit {
 
-LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights) {
-  return load_scene(asset_path, lights_path, use_file_lights, default_scene_limits());
-}
-
-LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights,
-                       const SceneLimits& limits) {
+LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, const SceneOptions& options) {
   LoadedScene loaded;
   if (is_gltf_path(asset_path)) {
     loaded.gltf = load_gltf_file(asset_path);
     loaded.warnings = loaded.gltf->warnings;
-    loaded.scene = build_scene(*loaded.gltf, loaded.warnings, limits, use_file_lights);
+    loaded.scene = build_scene(*loaded.gltf, loaded.warnings, options);
   } else if (is_mesh_path(asset_path)) {
-    loaded.scene = load_mesh_file(asset_path, loaded.warnings, limits.max_vertices);
+    loaded.scene = load_mesh_file(asset_path, loaded.warnings, options.limits.max_vertices);
   } else {
     throw InputError(asset_path, "unsupported file type (expected .gltf, .glb, .obj, .ply, .off or .stl)");
   }
-  if (!use_file_lights) loaded.scene.lights.clear();
+  if (!options.file_lights) loaded.scene.lights.clear();
   if (!lights_path.empty()) {
     auto lights = read_lights_json(lights_path);
     loaded.scene.lights.insert(loaded.scene.lights.end(), lights.begin(), lights.end());

@@ -19,8 +19,8 @@ struct LoadedScene {
 };
 
 // Throws InputError naming the file for anything it cannot read.
-// The file's own lights (KHR_lights_punctual) are kept unless use_file_lights is false; the
-// lights of LIGHTS.json are added to them.
+// The file's own lights (glTF light extensions, emissive glTF triangles, emissive .mtl materials
+// of an OBJ) are kept unless use_file_lights is false; the lights of LIGHTS.json are added to them.
 LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights = true);
 // Same with explicit limits instead of default_scene_limits() (the library API, src/api/).
 LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, bool use_file_lights,

@@ -82,7 +82,7 @@ TEST_CASE("an OBJ with a .mtl: one primitive per material, Kd as base colour, Ns
   for (const auto& n : primitive_of(s, "light").normals) CHECK(n == Vec3d{0, -1, 0});
 }
 
-TEST_CASE("Ke becomes an area light as a glTF emissive triangle does; --no-file-lights drops it") {
+TEST_CASE("Ke becomes an area light as a glTF emissive triangle does, --no-file-lights drops it") {
   const auto dir = vlit::test::temp_dir("obj-ke");
   const auto obj = vlit::test::write_cornell_obj(dir).string();
   const LoadedScene loaded = load_scene(obj, "");
@@ -149,7 +149,7 @@ TEST_CASE("the OBJ emitter lights the floor: the same panel as an explicit light
   for (const auto& c : a[3].diffuse) CHECK(c.x == 0);
 }
 
-TEST_CASE("a missing .mtl is a warning naming the OBJ and the .mtl; its faces are grey") {
+TEST_CASE("a missing .mtl is a warning naming the OBJ and the .mtl, its faces are grey") {
   const auto dir = vlit::test::temp_dir("obj-no-mtl");
   const auto obj = vlit::test::write_cornell_obj(dir, false).string();
   std::vector<std::string> warnings;
@@ -218,7 +218,7 @@ TEST_CASE("malformed .mtl and OBJ statements are errors naming the file and the 
   CHECK(error_of(bad) == bad + ": line 3: f needs at least 3 corners, got 2");
 }
 
-TEST_CASE("OBJ normals: a hard edge written with two normals stays hard; vertices without normals are smooth") {
+TEST_CASE("OBJ normals: a hard edge written with two normals stays hard, vertices without normals are smooth") {
   const auto dir = vlit::test::temp_dir("obj-normals");
   const auto path = (dir / "roof.obj").string();
   // Two faces sharing the edge (0,0,0)-(0,0,1): a roof ridge, once with a normal per face, once

@@ -9,7 +9,7 @@ namespace vlit {
 
 // True when `output` exists and its modification time is strictly later than that of `input` and,
 // if `lights` is not empty, of `lights`. Other files the input refers to (a .gltf's .bin and
-// images) and the bake options are not compared (docs/batch-sharding.md).
+// images, an .obj's .mtl) and the bake options are not compared (docs/batch-sharding.md).
 bool output_is_current(const std::string& output, const std::string& input, const std::string& lights);
 
 }  // namespace vlit

@@ -73,4 +73,52 @@ double luminous_flux(const LightSource& l) {
   return 4 * M_PI * peak;
 }
 
+void EmissiveLightSet::add(LightSource light) {
+  Ranked r{luminous_flux(light), seen_++, std::move(light)};
+  if (kept_.size() < limit_) {
+    kept_.push_back(std::move(r));
+    std::push_heap(kept_.begin(), kept_.end(), stronger);
+  } else if (!kept_.empty() && stronger(r, kept_.front())) {
+    std::pop_heap(kept_.begin(), kept_.end(), stronger);
+    kept_.back() = std::move(r);
+    std::push_heap(kept_.begin(), kept_.end(), stronger);
+  }
+}
+
+void EmissiveLightSet::add_triangles(const ScenePrimitive& primitive, std::size_t index, const Material& material,
+                                     const std::string& name) {
+  PlanarMergeStats merge;
+  for (auto& l : emissive_triangle_lights(primitive, index, material, name, &merge)) add(std::move(l));
+  merge_.triangles += merge.triangles;
+  merge_.regions += merge.regions;
+  merge_.merged_regions += merge.merged_regions;
+}
+
+void EmissiveLightSet::finish(const std::string& file, std::vector<LightSource>& lights, std::vector<std::string>& warnings) {
+  if (seen_ > limit_)
+    warnings.push_back(file + ": emissive geometry makes " + std::to_string(seen_) + " lights; kept the " +
+                       std::to_string(limit_) +
+                       " brightest (the limit that keeps a bake fast; raise it with --max-emissive-lights)");
+  if (merge_.regions > merge_.merged_regions)
+    warnings.push_back(file + ": " + std::to_string(merge_.regions - merge_.merged_regions) +
+                       " coplanar emissive regions have holes, pinched or long boundaries; their triangles are lit "
+                       "as separate area lights (exact, slower)");
+  if (seen_ > limit_) std::sort(kept_.begin(), kept_.end(), stronger);
+  else std::sort(kept_.begin(), kept_.end(), [](const Ranked& a, const Ranked& b) { return a.order < b.order; });
+  for (auto& r : kept_) lights.push_back(std::move(r.light));
+  kept_.clear();
+}
+
+void add_emissive_triangle_lights(Scene& scene, const std::string& file, std::size_t limit,
+                                  std::vector<std::string>& warnings) {
+  EmissiveLightSet set(limit);
+  for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
+    const Material& material = scene.material_of(scene.primitives[i]);
+    if (emits_light(material))
+      set.add_triangles(scene.primitives[i], i, material,
+                        file + ": " + (material.name.empty() ? "primitive " + std::to_string(i) : "material " + material.name));
+  }
+  set.finish(file, scene.lights, warnings);
+}
+
 }  // namespace vlit

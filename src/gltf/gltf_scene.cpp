@@ -60,55 +60,13 @@ std::string limit_message(const char* what, std::size_t limit) {
          " (the limit that protects the machine; raise it with --max-vertices)";
 }
 
-// The brightest lights of the file's emissive geometry, at most `limit` at any time, so an asset
-// with a million emissive triangles never holds a million lights: a heap whose front is the
-// weakest kept light (by luminous flux; on equal flux the later one in the file is weaker).
-class EmissiveLights {
- public:
-  explicit EmissiveLights(std::size_t limit) : limit_(limit) {}
-
-  void add(LightSource light) {
-    Ranked r{luminous_flux(light), seen_++, std::move(light)};
-    if (kept_.size() < limit_) {
-      kept_.push_back(std::move(r));
-      std::push_heap(kept_.begin(), kept_.end(), stronger);
-    } else if (!kept_.empty() && stronger(r, kept_.front())) {
-      std::pop_heap(kept_.begin(), kept_.end(), stronger);
-      kept_.back() = std::move(r);
-      std::push_heap(kept_.begin(), kept_.end(), stronger);
-    }
-  }
-  std::size_t seen() const { return seen_; }
-  // File order when nothing was dropped, brightest first otherwise.
-  std::vector<LightSource> take() {
-    if (seen_ > limit_) std::sort(kept_.begin(), kept_.end(), stronger);
-    else std::sort(kept_.begin(), kept_.end(), [](const Ranked& a, const Ranked& b) { return a.order < b.order; });
-    std::vector<LightSource> out;
-    for (auto& r : kept_) out.push_back(std::move(r.light));
-    return out;
-  }
-
- private:
-  struct Ranked {
-    double flux;
-    std::size_t order;
-    LightSource light;
-  };
-  static bool stronger(const Ranked& a, const Ranked& b) {
-    return a.flux > b.flux || (a.flux == b.flux && a.order < b.order);
-  }
-  std::size_t limit_, seen_ = 0;
-  std::vector<Ranked> kept_;
-};
-
 // What build_scene collects besides the scene: the lights of emissive geometry (ranked and limited)
 // and the state of the limits.
 struct BuildState {
   explicit BuildState(const SceneLimits& limits) : emissive_lights(limits.max_emissive_lights) {}
   bool file_lights = true;
   std::size_t vertices_so_far = 0, corners_so_far = 0;
-  EmissiveLights emissive_lights;
-  PlanarMergeStats merge;  // summed over primitives, for the message about merging
+  EmissiveLightSet emissive_lights;
 };
 
 bool is_line_mode(int mode) {
@@ -251,13 +209,8 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
   for (std::size_t i = 0; i < bad.size(); ++i)
     if (bad[i]) out.normals[i] = {};
   if (state.file_lights && material && emits_light(*material)) {
-    PlanarMergeStats merge;
-    auto lights = emissive_triangle_lights(out, scene.primitives.size(), *material,
-                                           file.path + ": nodes[" + std::to_string(node_index) + "] " + where, &merge);
-    state.merge.triangles += merge.triangles;
-    state.merge.regions += merge.regions;
-    state.merge.merged_regions += merge.merged_regions;
-    for (auto& l : lights) state.emissive_lights.add(std::move(l));
+    state.emissive_lights.add_triangles(out, scene.primitives.size(), *material,
+                                        file.path + ": nodes[" + std::to_string(node_index) + "] " + where);
   }
   scene.primitives.push_back(std::move(out));
 }
@@ -284,6 +237,7 @@ Material read_material(const GltfFile& file, std::size_t index, std::vector<std:
   out.metallic = m.pbrMetallicRoughness.metallicFactor;
   out.roughness = m.pbrMetallicRoughness.roughnessFactor;
   out.double_sided = m.doubleSided;
+  out.name = m.name;
   for (double* v : {&out.base_color.x, &out.base_color.y, &out.base_color.z, &out.metallic, &out.roughness})
     if (!std::isfinite(*v)) *v = 1;
   return out;
@@ -453,15 +407,7 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
     }
 
   // Emissive geometry: the brightest max_emissive_lights lights, by luminous flux.
-  if (state.emissive_lights.seen() > limits.max_emissive_lights)
-    warnings.push_back(file.path + ": emissive geometry makes " + std::to_string(state.emissive_lights.seen()) +
-                       " lights; kept the " + std::to_string(limits.max_emissive_lights) +
-                       " brightest (the limit that keeps a bake fast; raise it with --max-emissive-lights)");
-  if (state.merge.regions > state.merge.merged_regions)
-    warnings.push_back(file.path + ": " + std::to_string(state.merge.regions - state.merge.merged_regions) +
-                       " coplanar emissive regions have holes, pinched or long boundaries; their triangles are lit "
-                       "as separate area lights (exact, slower)");
-  for (auto& l : state.emissive_lights.take()) scene.lights.push_back(std::move(l));
+  state.emissive_lights.finish(file.path, scene.lights, warnings);
   return scene;
 }
 

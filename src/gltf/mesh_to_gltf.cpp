@@ -1,5 +1,6 @@
 #include "gltf/mesh_to_gltf.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "gltf/gltf_append.h"
@@ -17,6 +18,23 @@ tinygltf::Model gltf_from_mesh_scene(Scene& scene) {
     material.pbrMetallicRoughness.metallicFactor = m.metallic;
     material.pbrMetallicRoughness.roughnessFactor = m.roughness;
     material.doubleSided = m.double_sided;
+    material.name = m.name;
+    // Emission E = emissiveFactor x emissiveStrength with the factor at most 1 (glTF's range):
+    // the strength carries what exceeds 1 (KHR_materials_emissive_strength).
+    const Vec3d e = m.emission();
+    const double peak = std::max({e.x, e.y, e.z});
+    if (peak > 0 && std::isfinite(peak)) {
+      const double strength = std::max(peak, 1.0);
+      material.emissiveFactor = {e.x / strength, e.y / strength, e.z / strength};
+      if (strength > 1) {
+        tinygltf::Value::Object ext;
+        ext["emissiveStrength"] = tinygltf::Value(strength);
+        material.extensions["KHR_materials_emissive_strength"] = tinygltf::Value(ext);
+        if (std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_materials_emissive_strength") ==
+            model.extensionsUsed.end())
+          model.extensionsUsed.push_back("KHR_materials_emissive_strength");
+      }
+    }
     model.materials.push_back(std::move(material));
   }
   tinygltf::Scene gltf_scene;
@@ -43,6 +61,7 @@ tinygltf::Model gltf_from_mesh_scene(Scene& scene) {
     model.accessors.push_back(indices);
     p.indices = static_cast<int>(model.accessors.size()) - 1;
     tinygltf::Mesh mesh;
+    mesh.name = scene.material_of(prim).name;  // an OBJ's usemtl, so a viewer lists its parts
     mesh.primitives.push_back(std::move(p));
     model.meshes.push_back(std::move(mesh));
     tinygltf::Node node;

@@ -9,7 +9,8 @@
 namespace vlit {
 
 // One node, mesh and TRIANGLES primitive per scene primitive (positions in float, already in
-// world space; normals; 32-bit indices) and the scene's materials as metallic-roughness ones.
+// world space; normals; 32-bit indices) and the scene's materials as metallic-roughness ones,
+// with their names and emission (emissiveFactor, plus KHR_materials_emissive_strength above 1).
 // Points each scene primitive at its glTF node, mesh and
 // primitive (ScenePrimitive::node/mesh/primitive) so bake_vertex_colors can find it.
 tinygltf::Model gltf_from_mesh_scene(Scene& scene);

@@ -1,6 +1,7 @@
 #include "load/load_scene.h"
 
 #include "core/input_error.h"
+#include "gltf/emissive_lights.h"
 #include "gltf/gltf_scene.h"
 #include "io/lights_json.h"
 #include "mesh/mesh_file.h"
@@ -15,6 +16,9 @@ LoadedScene load_scene(const std::string& asset_path, const std::string& lights_
     loaded.scene = build_scene(*loaded.gltf, loaded.warnings, options);
   } else if (is_mesh_path(asset_path)) {
     loaded.scene = load_mesh_file(asset_path, loaded.warnings, options.limits.max_vertices);
+    // Emissive materials (an OBJ's Ke) become lights exactly as a glTF's emissive triangles.
+    if (options.file_lights)
+      add_emissive_triangle_lights(loaded.scene, asset_path, options.limits.max_emissive_lights, loaded.warnings);
   } else {
     throw InputError(asset_path, "unsupported file type (expected .gltf, .glb, .obj, .ply, .off or .stl)");
   }

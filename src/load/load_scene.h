@@ -22,9 +22,9 @@ struct LoadedScene {
 
 // Throws InputError naming the file for anything it cannot read, or for an asset beyond
 // options.limits. The lights stored in the asset (KHR_lights_punctual, EXT_lights_area,
-// VLIT_lights_linear, emissive geometry: docs/gltf-lights.md) are kept unless
-// options.file_lights is false; the lights of LIGHTS.json (lights_path, may be empty) are added
-// after them.
+// VLIT_lights_linear, emissive geometry, emissive .mtl materials of an OBJ: docs/gltf-lights.md)
+// are kept unless options.file_lights is false; the lights of LIGHTS.json (lights_path, may be
+// empty) are added after them.
 LoadedScene load_scene(const std::string& asset_path, const std::string& lights_path, const SceneOptions& options = {});
 
 }  // namespace vlit

@@ -8,6 +8,7 @@
 
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
+#include "mesh/obj_file.h"
 #include "mesh/vertex_normals.h"
 
 namespace vlit {
@@ -41,6 +42,7 @@ Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings
 Scene load_mesh_file(const std::string& path, std::vector<std::string>& warnings, std::size_t max_vertices) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "cannot open: not a regular file");
+  if (extension_of(path) == ".obj") return load_obj_file(path, warnings, max_vertices);
   TriMesh mesh;
   OpenMesh::IO::Options options = OpenMesh::IO::Options::VertexNormal;
   // OpenMesh reports problems on its own log streams; keep them off the user's terminal and

@@ -1,6 +1,7 @@
-// OBJ, PLY, OFF and STL meshes, read with OpenMesh's readers, as a one-primitive Scene (no
-// transform, default material). Polygons are triangulated by OpenMesh; normals come from the file
-// when it has them, otherwise from OpenMesh's vertex normals.
+// Mesh files as a Scene (no transform): OBJ with its .mtl materials (mesh/obj_file.h, one
+// primitive per material); PLY, OFF and STL read with OpenMesh's readers as one primitive with the
+// grey material of docs/conventions.md. Polygons are triangulated; normals come from the file when
+// it has them, otherwise they are angle-weighted (mesh/vertex_normals.h).
 #pragma once
 
 #include <string>

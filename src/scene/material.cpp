@@ -1,6 +1,7 @@
 #include "scene/material.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace vlit {
 
@@ -14,6 +15,11 @@ PhongMaterial phong_from_metallic_roughness(const Material& m) {
   const double exponent = alpha > 0 ? 2 / (alpha * alpha) - 2 : 1e4;
   p.shininess = std::clamp(exponent, 1.0, 1e4);
   return p;
+}
+
+double roughness_for_shininess(double shininess) {
+  const double m = std::clamp(shininess, 1.0, 1e4);
+  return std::pow(2 / (m + 2), 0.25);  // alpha^2 = roughness^4 = 2 / (m + 2)
 }
 
 }  // namespace vlit

@@ -1,11 +1,14 @@
 // Surface material: what the glTF says (metallic-roughness) and the Phong terms the kernels use.
 #pragma once
 
+#include <string>
+
 #include "core/vec3.h"
 
 namespace vlit {
 
 struct Material {
+  std::string name;           // the file's name for it (glTF name, OBJ usemtl), for messages and output
   Vec3d base_color{1, 1, 1};  // linear RGB (glTF baseColorFactor, alpha ignored)
   double metallic = 1;        // glTF defaults
   double roughness = 1;
@@ -34,5 +37,10 @@ struct PhongMaterial {
 };
 
 PhongMaterial phong_from_metallic_roughness(const Material& material);
+
+// The inverse of the shininess mapping above: the roughness whose Phong exponent is `shininess`
+// (clamped to [1, 1e4] first), roughness = (2 / (m + 2))^(1/4). For materials that come with an
+// exponent (an OBJ's .mtl Ns), so phong_from_metallic_roughness gives that exponent back.
+double roughness_for_shininess(double shininess);
 
 }  // namespace vlit

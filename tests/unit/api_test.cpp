@@ -13,6 +13,8 @@
 #include <sstream>
 
 #include "bake/bake_file.h"
+#include "gltf/accessor_reader.h"
+#include "support/cornell_obj.h"
 #include "support/gltf_builder.h"
 
 namespace {
@@ -83,6 +85,32 @@ TEST_CASE("api: bake of a model in memory equals the command line's bake_file, b
   // scene cos(acos(c)) gives back the same doubles, so the bytes are the same.)
   CHECK(read_bytes(dir / "in-code.glb") == expected);
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("api: an OBJ's .mtl emitter lights the model loaded with load_model, as in vlit bake") {
+  const auto dir = vlit::test::temp_dir("api-obj");
+  const auto obj = vlit::test::write_cornell_obj(dir).string();
+  vlit::BakeFileOptions cli;
+  cli.encode.format = vlit::ColorFormat::kFloat;
+  vlit::bake_file(obj, (dir / "cli.glb").string(), cli);
+  tinygltf::Model model = vlit::load_model(obj);
+  vlit::BakeSettings settings;
+  settings.encoding = vlit::ColorEncoding::kFloat;
+  const vlit::BakeSummary summary = vlit::bake(model, vlit::Lights{}, settings, obj);
+  CHECK(summary.lights == 1);  // the lamp's Ke, read back from the glTF's emissive material
+  const tinygltf::Model expected = vlit::load_model((dir / "cli.glb").string());
+  REQUIRE(model.meshes.size() == 4);
+  REQUIRE(expected.meshes.size() == 4);
+  const auto& a = model.meshes[0].primitives[0];
+  const auto& b = expected.meshes[0].primitives[0];
+  const auto ca = vlit::read_accessor_as_doubles(model, a.attributes.at("COLOR_0"), obj);
+  const auto cb = vlit::read_accessor_as_doubles(expected, b.attributes.at("COLOR_0"), obj);
+  REQUIRE(ca.size() == cb.size());
+  double peak = 0;
+  for (double c : cb) peak = std::max(peak, c);
+  CHECK(peak > 0);
+  // Positions pass through float in the model (the CLI lights the OBJ's doubles): equal to float precision.
+  for (std::size_t i = 0; i < ca.size(); ++i) CHECK(ca[i] == doctest::Approx(cb[i]).epsilon(1e-5));
 }
 
 TEST_CASE("api: the thread count does not change a bake") {

@@ -27,3 +27,18 @@ TEST_CASE("metallic-roughness to Phong mapping (docs/conventions.md)") {
   m.roughness = 0;  // mirror: the largest exponent
   CHECK(phong_from_metallic_roughness(m).shininess == 1e4);
 }
+
+TEST_CASE("roughness_for_shininess inverts the shininess mapping (an OBJ's Ns)") {
+  for (const double ns : {1.0, 2.5, 10.0, 30.0, 250.0, 1000.0, 1e4}) {
+    Material m;
+    m.roughness = roughness_for_shininess(ns);
+    CHECK(m.roughness >= 0);
+    CHECK(m.roughness <= 1);
+    CHECK(phong_from_metallic_roughness(m).shininess == doctest::Approx(ns).epsilon(1e-12));
+  }
+  // Roughness 0.5 is m = 30 (above); the inverse gives it back.
+  CHECK(roughness_for_shininess(30) == doctest::Approx(0.5).epsilon(1e-15));
+  // Outside [1, 1e4] the exponent is clamped first, as the forward mapping clamps.
+  CHECK(roughness_for_shininess(0) == roughness_for_shininess(1));
+  CHECK(roughness_for_shininess(1e9) == roughness_for_shininess(1e4));
+}

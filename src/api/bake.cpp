@@ -3,6 +3,7 @@
 #include "api/api_internal.h"
 #include "bake/bake_file.h"
 #include "bake/light_vertices.h"
+#include "bake/target_attribute.h"
 #include "bake/vertex_color_bake.h"
 #include "gltf/gltf_file.h"
 
@@ -14,6 +15,8 @@ BakeOptions encode_options(const BakeSettings& s, const std::string& name) {
   if (s.specular_eye && !(std::isfinite((*s.specular_eye)[0]) && std::isfinite((*s.specular_eye)[1]) &&
                           std::isfinite((*s.specular_eye)[2])))
     throw Error(name, "specular_eye must be finite", "settings.specular_eye");
+  if (const std::string problem = target_attribute_problem(s.target); !problem.empty())
+    throw Error(name, problem, "settings.target");
   BakeOptions o;
   o.target = s.target;
   o.mode = s.existing == ExistingColors::kMultiply ? BakeMode::kMultiply : BakeMode::kReplace;

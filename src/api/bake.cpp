@@ -76,7 +76,9 @@ BakeSummary bake(tinygltf::Model& model, const Lights& lights, const BakeSetting
     scene.lights.insert(scene.lights.end(), lights.impl().sources.begin(), lights.impl().sources.end());
     if (scene.lights.empty()) warnings.push_back(name + ": no lights; the bake is black");
     const LightingRequest request = bake_request(settings);
-    const std::vector<VertexLight> light = light_scene_vertices(scene, request);
+    const ScenePlan plan = plan_lighting(scene, request);
+    for (const std::string& line : unreached_light_warnings(plan, scene)) warnings.push_back(name + ": " + line);
+    const std::vector<VertexLight> light = light_scene_vertices(scene, plan, request);
     if (api::cancelled(settings)) throw Cancelled(name);
     const BakeReport report = bake_vertex_colors(file.model, scene, light, encode);
     if (report.specular_unrepresentable > 0)

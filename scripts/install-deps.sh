@@ -8,9 +8,11 @@ packages=(
   g++ cmake ninja-build pkg-config       # toolchain
   libopenmesh-dev                        # mesh structure, normals, OBJ/PLY/OFF/STL readers
   libtinygltf-dev nlohmann-json3-dev     # glTF read/write (tinygltf uses nlohmann-json)
+  libdraco-dev libmeshoptimizer-dev      # compressed glTF geometry: KHR_draco_mesh_compression, EXT_meshopt_compression
   libstb-dev                             # PNG encode/decode
   libcli11-dev                           # command line
   doctest-dev                            # tests
+  draco                                  # tests: draco_transcoder makes the Draco-compressed test assets
   libboost-dev                           # Boost.Math quadrature for independent test references
   libbenchmark-dev                       # bench/ programs
   clang libclang-rt-14-dev libomp-dev    # fuzz/ targets (libFuzzer, clang's OpenMP), run by .ci/run

@@ -55,7 +55,7 @@ info=$(dpkg-deb --info "$deb")
 contents=$(dpkg-deb --contents "$deb")
 echo "$info" | grep -E '^ (Package|Version|Architecture|Depends|Recommends):'
 depends=$(echo "$info" | sed -n 's/^ Depends: //p')
-for lib in libgomp1 libopenmesh1 libstb0 libtinygltf2d libstdc++6 libc6; do
+for lib in libgomp1 libopenmesh1 libstb0 libtinygltf2d libdraco7 libmeshoptimizer2d libstdc++6 libc6; do
   [[ $depends == *"$lib"* ]] || fail "Depends lacks $lib: $depends"
 done
 for f in ./usr/bin/vlit ./usr/include/vlit/vlit.h ./usr/lib/libvlit.a ./usr/lib/cmake/vlit/vlitConfig.cmake \

@@ -154,7 +154,7 @@ enum class ColorEncoding { kUnorm16, kUnorm8, kFloat };  // --color-format
 enum class ExistingColors { kReplace, kMultiply };       // --mode
 
 struct BakeSettings : Settings {
-  std::string target = "COLOR_0";                  // --target
+  std::string target = "COLOR_0";                  // --target: COLOR_n or an application-specific _NAME
   ColorEncoding encoding = ColorEncoding::kUnorm16;
   ExistingColors existing = ExistingColors::kReplace;
   double exposure = 1;                             // > 0

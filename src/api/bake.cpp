@@ -3,6 +3,7 @@
 #include "api/api_internal.h"
 #include "bake/bake_file.h"
 #include "bake/light_vertices.h"
+#include "bake/target_attribute.h"
 #include "bake/vertex_color_bake.h"
 #include "gltf/gltf_file.h"
 
@@ -14,6 +15,8 @@ BakeOptions encode_options(const BakeSettings& s, const std::string& name) {
   if (s.specular_eye && !(std::isfinite((*s.specular_eye)[0]) && std::isfinite((*s.specular_eye)[1]) &&
                           std::isfinite((*s.specular_eye)[2])))
     throw Error(name, "specular_eye must be finite", "settings.specular_eye");
+  if (const std::string problem = target_attribute_problem(s.target); !problem.empty())
+    throw Error(name, problem, "settings.target");
   BakeOptions o;
   o.target = s.target;
   o.mode = s.existing == ExistingColors::kMultiply ? BakeMode::kMultiply : BakeMode::kReplace;
@@ -73,7 +76,9 @@ BakeSummary bake(tinygltf::Model& model, const Lights& lights, const BakeSetting
     scene.lights.insert(scene.lights.end(), lights.impl().sources.begin(), lights.impl().sources.end());
     if (scene.lights.empty()) warnings.push_back(name + ": no lights; the bake is black");
     const LightingRequest request = bake_request(settings);
-    const std::vector<VertexLight> light = light_scene_vertices(scene, request);
+    const ScenePlan plan = plan_lighting(scene, request);
+    for (const std::string& line : unreached_light_warnings(plan, scene)) warnings.push_back(name + ": " + line);
+    const std::vector<VertexLight> light = light_scene_vertices(scene, plan, request);
     if (api::cancelled(settings)) throw Cancelled(name);
     const BakeReport report = bake_vertex_colors(file.model, scene, light, encode);
     if (report.specular_unrepresentable > 0)

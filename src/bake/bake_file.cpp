@@ -48,6 +48,7 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   t = Clock::now();
   const ScenePlan plan = plan_lighting(loaded.scene, request);
   result.plan = describe(plan, loaded.scene);
+  for (const std::string& line : unreached_light_warnings(plan, loaded.scene)) result.warnings.push_back(input + ": " + line);
   result.seconds.plan = since(t);
   t = Clock::now();
   const auto light = light_scene_vertices(loaded.scene, plan, request);

@@ -14,6 +14,7 @@
 #include <set>
 
 #include "bake/bake_file.h"
+#include "bake/target_attribute.h"
 #include "batch/abandoned_temporaries.h"
 #include "batch/batch_inputs.h"
 #include "batch/manifest.h"
@@ -274,7 +275,9 @@ Runner add_bake_command(CLI::App& app) {
       ->required();
   cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--target", args->target, "Attribute that receives the light (default COLOR_0)");
+  cmd->add_option("--target", args->target,
+                  "Attribute that receives the light: COLOR_n or an application-specific _NAME (default COLOR_0)")
+      ->check(CLI::Validator([](const std::string& value) { return target_attribute_problem(value); }, "COLOR_n|_NAME"));
   cmd->add_option("--mode", args->mode, "When the attribute exists: replace (default, with a warning) or multiply")
       ->check(CLI::IsMember({"replace", "multiply"}));
   cmd->add_option("--color-format", args->color_format, "Encoding of the baked colors: unorm16 (default), unorm8 or float")

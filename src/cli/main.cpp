@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; every usage error exits 2 (README "Exit status").
+    return app.exit(e) == 0 ? 0 : 2;
   }
   try {
     if (app.got_subcommand("bake")) return bake();

@@ -116,6 +116,7 @@ int run_render(const RenderArgs& args) {
     t = Clock::now();
     plan = plan_lighting(scene, request);
     plan_seconds = since(t);
+    for (const std::string& line : unreached_light_warnings(*plan, scene)) print_warning(args.input + ": " + line);
     t = Clock::now();
     const auto light = light_scene_vertices(scene, *plan, request);
     light_seconds = since(t);

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include "core/input_error.h"
+#include "gltf/decompress_geometry.h"
+#include "gltf/required_extensions.h"
 #include "io/read_file.h"
 
 namespace vlit {
@@ -70,11 +73,20 @@ bool refuse_write(std::string* err, const std::string& path, const std::vector<u
   return false;
 }
 
-// Extensions that change where or how vertex data is stored. An asset that requires one of
-// them cannot be lit correctly without decoding it, so it is refused.
-const char* const kUndecodableExtensions[] = {
-    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression",
-};
+// "%20" -> " ": a buffer URI as a file name (glTF URIs are percent-encoded, RFC 3986).
+std::string percent_decode(const std::string& uri) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -94,19 +106,29 @@ bool is_gltf_path(const std::string& path) {
 GltfFile load_gltf_file(const std::string& path) {
   GltfFile file;
   file.path = path;
-  const std::string bytes = read_text_file(path);
-  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
-
-  tinygltf::TinyGLTF loader;
-  loader.SetImageLoader(&keep_image_undecoded, nullptr);
-  ExternalReadBudget budget;
-  loader.SetFsCallbacks(tinygltf::FsCallbacks{&regular_file_exists, &literal_path, &read_regular_file, &refuse_write, &budget});
-  loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
-  std::string err, warn;
   const std::string base_dir = [&] {
     const auto slash = path.find_last_of('/');
     return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
   }();
+  ExternalReadBudget budget;
+  // Required extensions are checked and compressed geometry decoded before tinygltf parses.
+  std::string bytes = read_text_file(path);
+  std::optional<std::string> decoded = decompress_geometry(bytes, path, [&](const std::string& uri) {
+    if (uri.find("://") != std::string::npos) throw InputError(path, "vlit reads no URLs: " + uri);
+    std::vector<unsigned char> data;
+    std::string err;
+    if (!read_regular_file(&data, &err, base_dir + "/" + percent_decode(uri), &budget))
+      throw InputError(path, err.substr(0, err.find('\n')));
+    return std::string(data.begin(), data.end());
+  });
+  if (decoded) bytes = std::move(*decoded);
+  const bool binary = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+
+  tinygltf::TinyGLTF loader;
+  loader.SetImageLoader(&keep_image_undecoded, nullptr);
+  loader.SetFsCallbacks(tinygltf::FsCallbacks{&regular_file_exists, &literal_path, &read_regular_file, &refuse_write, &budget});
+  loader.SetStoreOriginalJSONForExtrasAndExtensions(false);
+  std::string err, warn;
   bool ok = false;
   if (binary) {
     ok = loader.LoadBinaryFromMemory(&file.model, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
@@ -134,8 +156,8 @@ GltfFile load_gltf_file(const std::string& path) {
 
 void check_decodable(const tinygltf::Model& model, const std::string& name) {
   for (const std::string& ext : model.extensionsRequired)
-    for (const char* undecodable : kUndecodableExtensions)
-      if (ext == undecodable) throw InputError(name, "requires " + ext + ", which vlit does not decode");
+    if (is_compression_extension(ext))
+      throw InputError(name, "requires " + ext + ", which vlit decodes only while it reads a file (vlit::load_model)");
 }
 
 }  // namespace vlit

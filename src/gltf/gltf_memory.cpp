@@ -1,8 +1,10 @@
 #include "gltf/gltf_memory.h"
 
 #include <limits>
+#include <optional>
 
 #include "core/input_error.h"
+#include "gltf/decompress_geometry.h"
 
 namespace vlit {
 namespace {
@@ -24,11 +26,6 @@ bool refuse_write(std::string* err, const std::string& path, const std::vector<u
   return false;
 }
 
-// Same list as gltf_file.cpp (kUndecodableExtensions); keep the two in step.
-const char* const kUndecodableExtensions[] = {
-    "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression",
-};
-
 std::string first_line(const std::string& s) {
   std::string line = s.substr(0, s.find('\n'));
   while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
@@ -42,6 +39,11 @@ GltfFile load_gltf_from_memory(std::string_view bytes, const std::string& name) 
   file.path = name;
   if (bytes.size() > std::numeric_limits<unsigned int>::max())
     throw InputError(name, "asset is larger than 4 GiB");
+  // Required extensions are checked and compressed geometry decoded before tinygltf parses.
+  const std::optional<std::string> decoded = decompress_geometry(bytes, name, [&](const std::string& uri) -> std::string {
+    throw InputError(name, "an asset in memory cannot read external files: " + uri);
+  });
+  if (decoded) bytes = *decoded;
   const bool binary = bytes.size() >= 4 && bytes.substr(0, 4) == "glTF";
 
   tinygltf::TinyGLTF loader;
@@ -61,9 +63,7 @@ GltfFile load_gltf_from_memory(std::string_view bytes, const std::string& name) 
     throw InputError(name, "not a valid glTF 2.0 file: " + (message.empty() ? std::string("cannot parse glTF") : message));
   }
   if (!warn.empty()) file.warnings.push_back(name + ": " + first_line(warn));
-  for (const std::string& ext : file.model.extensionsRequired)
-    for (const char* undecodable : kUndecodableExtensions)
-      if (ext == undecodable) throw InputError(name, "requires " + ext + ", which vlit does not decode");
+  check_decodable(file.model, name);
   return file;
 }
 

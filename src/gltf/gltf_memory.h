@@ -1,6 +1,6 @@
 // Opening a glTF 2.0 asset (.gltf JSON or .glb) that is already in memory, with the same rules as
-// load_gltf_file (gltf/gltf_file.h): images are never decoded, the network is never touched, and
-// extensions that change how geometry is stored are refused. A memory asset has no directory, so
+// load_gltf_file (gltf/gltf_file.h): images are never decoded, the network is never touched, the
+// required extensions are checked and compressed geometry is decoded before parsing. A memory asset has no directory, so
 // external files are never opened: only the GLB binary chunk and data: URIs are read; an external
 // buffer URI is a load error. Used by the fuzz targets (fuzz/) and by tests.
 #pragma once

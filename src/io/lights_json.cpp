@@ -1,6 +1,7 @@
 #include "io/lights_json.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -102,6 +103,10 @@ Vec3d unit_or_fail(LightReader& r, const std::string& key, const Vec3d& v) {
   return v / len;
 }
 
+// How far a vertex of an area light may lie off its plane, relative to the polygon's size (the
+// diagonal of its bounding box): docs/lights-json.md.
+constexpr double kPlanarTolerance = 1e-6;
+
 // Checks that a polygon is a usable planar emitter: >= 3 vertices, non-zero area, planar.
 void validate_polygon(LightReader& r, const std::vector<Vec3d>& polygon) {
   if (polygon.size() < 3) r.fail("polygon", "an area light needs at least 3 vertices");
@@ -117,9 +122,21 @@ void validate_polygon(LightReader& r, const std::vector<Vec3d>& polygon) {
   const double size = length(extent_hi - extent_lo);
   if (!(twice_area > 0) || !(twice_area > 1e-300)) r.fail("polygon", "polygon has zero area");
   const Vec3d n = newell / twice_area;
+  // Offsets from the plane through the first vertex with Newell's normal.
   double max_offset = 0;
-  for (const Vec3d& q : polygon) max_offset = std::max(max_offset, std::abs(dot(q - polygon[0], n)));
-  if (max_offset > 1e-6 * size) r.fail("polygon", "polygon is not planar (a vertex is off its plane)");
+  std::size_t worst = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const double offset = std::abs(dot(polygon[i] - polygon[0], n));
+    if (offset > max_offset) max_offset = offset, worst = i;
+  }
+  const double tolerance = kPlanarTolerance * size;
+  if (max_offset > tolerance) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "polygon is not planar: vertex %zu is %.3g off the plane of the polygon, more than the tolerance %.3g "
+                  "(%g x its size %.3g)", worst, max_offset, tolerance, kPlanarTolerance, size);
+    r.fail("polygon", text);
+  }
 }
 
 LightSource read_light(const json& object, const std::string& file, const std::string& pointer) {

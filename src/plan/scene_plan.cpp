@@ -65,6 +65,87 @@ std::string cannot_reach(const LightSource& l, std::size_t p, const Bounds& b) {
   return {};
 }
 
+// The per-vertex tests behind no_vertex_reached, each a condition under which every kernel gives
+// exactly 0 (not merely little): a skipped pair then changes no bit of a bake.
+enum VertexMiss : unsigned {
+  kBehindEmitter = 1,  // one-sided area or disk light: the vertex is behind its emitting side
+  kOutOfRange = 2,     // glTF range: the range window is 0 at and beyond it
+  kOutsideCone = 4,    // spot: s = 0 outside the outer cone
+  kFacingAway = 8,     // horizon clipping: the whole light is below the vertex's tangent plane
+};
+constexpr const char* kMissWords[] = {"behind the emitting side", "beyond the light's range", "outside the spot cone",
+                                      "facing away from the light"};
+
+// Rounding margin, relative to the distances involved: a vertex within it of a boundary counts as
+// reached, so the kernel's own rounding can never make it lit after the plan skipped it.
+constexpr double kMissMargin = 1e-9;
+
+// Which tests vertex (p, n) fails for light l; 0 when it may receive light. Comparisons are
+// written so that a NaN fails none of them (non-finite input is never skipped here).
+unsigned vertex_misses(const LightSource& l, const Vec3d& p, const Vec3d& n) {
+  unsigned miss = 0;
+  auto below = [&](double value, double scale) { return value < -kMissMargin * scale; };
+  switch (l.type) {
+    case LightType::kPoint:
+    case LightType::kSpot: {
+      const Vec3d to_light = l.position - p;
+      const double d = length(to_light);
+      if (below(dot(n, to_light), d)) miss |= kFacingAway;
+      if (l.range && d * d > *l.range * *l.range * (1 + kMissMargin)) miss |= kOutOfRange;
+      if (l.type == LightType::kSpot && d > 0 && dot(-to_light, l.direction) / d < l.cos_outer - kMissMargin)
+        miss |= kOutsideCone;
+      break;
+    }
+    case LightType::kDirectional:
+      if (below(-dot(n, l.direction), 1.0)) miss |= kFacingAway;
+      break;
+    case LightType::kLinear:
+      if (below(dot(n, l.from - p), length(l.from - p)) && below(dot(n, l.to - p), length(l.to - p))) miss |= kFacingAway;
+      break;
+    case LightType::kArea: {
+      bool all_below = true;
+      for (const Vec3d& q : l.polygon) all_below = all_below && below(dot(n, q - p), length(q - p));
+      if (all_below) miss |= kFacingAway;
+      if (!l.two_sided) {
+        const auto [plane_normal, q] = emitter_plane(l);
+        if (below(dot(p - q, plane_normal), length(p - q))) miss |= kBehindEmitter;
+      }
+      break;
+    }
+    case LightType::kDisk: {
+      const Vec3d axis = normalize(l.normal);
+      const double along = dot(n, axis);
+      // The highest point of the disk above the tangent plane: centre plus radius along n's
+      // component in the disk's plane.
+      const double highest = dot(n, l.center - p) + l.radius * std::sqrt(std::max(0.0, 1 - along * along));
+      if (below(highest, length(l.center - p) + l.radius)) miss |= kFacingAway;
+      if (!l.two_sided && below(dot(p - l.center, axis), length(p - l.center) + l.radius)) miss |= kBehindEmitter;
+      break;
+    }
+  }
+  return miss;
+}
+
+// Why light l reaches no vertex of primitive `prim` ("every vertex behind the emitting side or
+// facing away from the light"), or empty if some vertex may receive its light.
+std::string no_vertex_reached(const LightSource& l, const ScenePrimitive& prim) {
+  unsigned seen = 0;
+  for (std::size_t v = 0; v < prim.positions.size(); ++v) {
+    const unsigned miss = vertex_misses(l, prim.positions[v], v < prim.normals.size() ? prim.normals[v] : Vec3d{});
+    if (miss == 0) return {};
+    seen |= miss;
+  }
+  std::string why = "every vertex";
+  const char* joint = " ";
+  for (unsigned bit = 0; bit < 4; ++bit)
+    if (seen & (1u << bit)) {
+      why += joint;
+      why += kMissWords[bit];
+      joint = " or ";
+    }
+  return why;
+}
+
 const char* diffuse_kernel(const LightSource& l, const ShadeOptions& o) {
   switch (l.type) {
     case LightType::kPoint: return "point (eq. 1)";
@@ -120,18 +201,34 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
   }
 
   plan.lights_of_primitive.resize(scene.primitives.size());
+  std::vector<std::vector<std::string>> misses(kept.size());  // per light: its distinct skip reasons
+  bool any_vertex = false;
   for (std::size_t p = 0; p < scene.primitives.size(); ++p) {
     const Bounds b = bounds_of(scene.primitives[p]);
+    any_vertex = any_vertex || !b.empty();
     for (std::size_t i = 0; i < kept.size(); ++i) {
       ++plan.pairs_total;
-      const std::string why = cannot_reach(*kept[i], p, b);
+      // The box first (cheap, whole primitives), then the vertices (the first reached one ends it).
+      std::string why = cannot_reach(*kept[i], p, b);
+      if (why.empty()) why = no_vertex_reached(*kept[i], scene.primitives[p]);
       if (why.empty()) {
         plan.lights_of_primitive[p].push_back(static_cast<int>(i));
         ++plan.pairs_kept;
       } else {
         plan.skipped.add(why, [&] { return "light " + kept[i]->name + " x primitive " + std::to_string(p); });
+        if (std::find(misses[i].begin(), misses[i].end(), why) == misses[i].end()) misses[i].push_back(why);
       }
     }
+  }
+  // A light that lights nothing at all is named with every reason it was skipped.
+  std::vector<char> reaches(kept.size(), 0);
+  for (const auto& lights : plan.lights_of_primitive)
+    for (int i : lights) reaches[static_cast<std::size_t>(i)] = 1;
+  for (std::size_t i = 0; i < kept.size() && any_vertex; ++i) {
+    if (reaches[i]) continue;
+    std::string why;
+    for (const std::string& m : misses[i]) why += (why.empty() ? "" : "; ") + m;
+    plan.unreached.emplace_back(i, why);
   }
   plan_shadows(scene, kept, options.shadows, plan);
   return plan;
@@ -164,6 +261,7 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     if (batch.light) s << "float SIMD batch (" << batch_instruction_set() << ")\n";
     else s << "scalar double (" << batch.reason << ")\n";
   }
+  for (const std::string& line : unreached_light_warnings(plan, scene)) s << "plan: " << line << "\n";
   for (const std::string& line : plan.skipped.details) s << "plan: skipped " << line << "\n";
   if (plan.skipped.total > plan.skipped.details.size()) {
     s << "plan: ... and " << plan.skipped.total - plan.skipped.details.size() << " more skipped; all "
@@ -172,6 +270,18 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     s << "\n";
   }
   return s.str();
+}
+
+std::vector<std::string> unreached_light_warnings(const ScenePlan& plan, const Scene& scene) {
+  std::vector<std::string> out;
+  for (const auto& [i, why] : plan.unreached) {
+    const LightSource& l = scene.lights[plan.source_of_light[i]];
+    std::string line = "light " + l.name + " reaches no vertex: " + why;
+    if (why.find("emitting side") != std::string::npos)
+      line += " (it emits toward the side from which its polygon runs counter-clockwise; reverse the polygon or make it two-sided)";
+    out.push_back(std::move(line));
+  }
+  return out;
 }
 
 }  // namespace vlit

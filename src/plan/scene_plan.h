@@ -5,6 +5,10 @@
 //   whose emitting side does not reach the primitive's bounding box, a spot light whose cone
 //   misses the primitive's bounding sphere, a light whose glTF range ends before the box, a light
 //   made from a primitive's own emissive triangles and that primitive (it does not light itself);
+//   then, vertex by vertex, a pair none of whose vertices can receive the light (each behind the
+//   emitting side, beyond the range, outside the cone, or with the whole light below its tangent
+//   plane: conditions under which every kernel gives exactly 0, so skipping changes no bit);
+// - a light that reaches no vertex at all is reported with why (unreached_light_warnings);
 // - specular work is planned only when an eye is given and asked for;
 // - every per-light constant is computed once (PreparedLight, and BatchLight for the lights
 //   whose diffuse-only work runs in a float SIMD batch kernel);
@@ -66,6 +70,9 @@ struct ScenePlan {
   std::size_t occluder_triangles = 0;                 // triangles of the scene when planned
   ShadeOptions shade;                                 // with_specular already resolved
   SkipLog skipped;                                    // what was left out, why
+  // Lights (indices into lights) that reach no vertex of the scene, with every reason their
+  // pairs were skipped, "; "-separated; empty when the scene has no vertex.
+  std::vector<std::pair<std::size_t, std::string>> unreached;
   std::size_t pairs_total = 0, pairs_kept = 0;
 };
 
@@ -73,5 +80,9 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options);
 
 // Human-readable plan: which kernels run where, what was skipped and why.
 std::string describe(const ScenePlan& plan, const Scene& scene);
+
+// One line per light that reaches no vertex: "light NAME reaches no vertex: REASONS", with a hint
+// when the light faces away from everything (its winding). For warnings and --explain.
+std::vector<std::string> unreached_light_warnings(const ScenePlan& plan, const Scene& scene);
 
 }  // namespace vlit

@@ -304,3 +304,30 @@ TEST_CASE("bake --specular-eye: a malformed eye is a one-line error") {
                               q((dir / "eye.glb").string()));
   CHECK_MESSAGE(ok.exit_code == 0, ok.err);
 }
+
+TEST_CASE("--target accepts COLOR_n or an application-specific _NAME; anything else is a usage error (exit 2)") {
+  const auto dir = vlit::test::temp_dir("cli-target");
+  const std::string bake = kVlit + " bake " + q(kDemo) + " --lights " + q(kDemoLights) + " -q --target ";
+  for (const std::string bad : {"NORMAL", "foo", "COLOR_", "COLOR_01", "COLOR_x", "_", "color_0", "TEXCOORD_0"}) {
+    CAPTURE(bad);
+    const auto r = run_command(bake + q(bad) + " -o " + q((dir / "bad.glb").string()));
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find("--target") != std::string::npos);
+    CHECK(r.err.find("\"" + bad + "\"") != std::string::npos);                  // the value given
+    CHECK(r.err.find("COLOR_n") != std::string::npos);                           // what is allowed
+    CHECK(r.err.find("starting with an underscore") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(dir / "bad.glb"));
+  }
+  for (const std::string good : {"COLOR_0", "_LIGHT"}) {
+    CAPTURE(good);
+    const std::string out = (dir / (good + ".glb")).string();
+    const auto r = run_command(bake + good + " -o " + q(out));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    const GltfFile baked = load_gltf_file(out);
+    for (const auto& mesh : baked.model.meshes)
+      for (const auto& prim : mesh.primitives) CHECK(prim.attributes.count(good) == 1);
+  }
+  // Other usage errors exit 2 as well (README "Exit status").
+  CHECK(run_command(kVlit + " bake " + q(kDemo) + " -o " + q((dir / "x.glb").string()) + " --mode sideways").exit_code == 2);
+  CHECK(run_command(kVlit + " bake").exit_code == 2);
+}

@@ -182,6 +182,11 @@ TEST_CASE("api: errors name the input and the place in it") {
     tinygltf::Model model;
     const vlit::Error e = error_of([&] { vlit::bake(model, vlit::Lights(), s, "m"); });
     CHECK(e.where() == "settings.exposure");
+    s.exposure = 1;
+    s.target = "NORMAL";  // not a colour attribute: the bake would write an invalid glTF
+    const vlit::Error t = error_of([&] { vlit::bake(model, vlit::Lights(), s, "m"); });
+    CHECK(t.where() == "settings.target");
+    CHECK(std::string(t.what()).find("\"NORMAL\" is not an attribute that can hold a colour") != std::string::npos);
   }
 }
 

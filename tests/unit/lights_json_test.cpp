@@ -44,7 +44,11 @@ TEST_CASE("LIGHTS.json errors name the file and the JSON pointer") {
   CHECK(message(R"({"lights": [{"type": "laser"}]})").find("unknown light type \"laser\"") != std::string::npos);
   CHECK(message(R"({"lights": [{"type": "area", "polygon": [[0,0,0],[1,0,0],[2,0,0]]}]})") ==
         "lights.json: /lights/0/polygon: polygon has zero area");
-  CHECK(message(R"({"lights": [{"type": "area", "polygon": [[0,0,0],[1,0,0],[1,1,0],[0,1,1]]}]})").find("not planar") !=
+  // Newell's normal of this quad is (1, -1, 2) / sqrt(6): vertices 1 and 3 lie 1 / sqrt(6) = 0.408
+  // off the plane through vertex 0; its size (box diagonal) is sqrt(3), the tolerance 1e-6 of it.
+  const std::string warped = message(R"({"lights": [{"type": "area", "polygon": [[0,0,0],[1,0,0],[1,1,0],[0,1,1]]}]})");
+  CHECK(warped.rfind("lights.json: /lights/0/polygon: polygon is not planar: vertex ", 0) == 0);
+  CHECK(warped.find(" is 0.408 off the plane of the polygon, more than the tolerance 1.73e-06 (1e-06 x its size 1.73)") !=
         std::string::npos);
   CHECK(message("{\"lights\": [\n  {\"type\": \"point\",,}\n]}").rfind("lights.json: line 2: invalid JSON", 0) == 0);
   CHECK(message(R"([1, 2])") == "lights.json: expected an object with a \"lights\" array");

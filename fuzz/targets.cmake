@@ -10,7 +10,7 @@ add_library(vlit_tinygltf_instrumented OBJECT ${VLIT_FUZZ_DIR}/tinygltf_instrume
 target_link_libraries(vlit_tinygltf_instrumented PRIVATE TinyGLTF::TinyGLTF nlohmann_json::nlohmann_json PkgConfig::STB)
 target_compile_options(vlit_tinygltf_instrumented PRIVATE -w)
 
-foreach(target fuzz_gltf fuzz_lights_json fuzz_points_csv)
+foreach(target fuzz_gltf fuzz_lights_json fuzz_points_csv fuzz_obj)
   add_executable(${target} ${VLIT_FUZZ_DIR}/${target}.cpp)
   target_link_libraries(${target} PRIVATE vlit_lib)
   target_link_options(${target} PRIVATE -fsanitize=fuzzer)

@@ -46,11 +46,16 @@ if [[ -n ${VLIT_EXTRA_ASSETS:-} && -d $extra ]]; then
   $vlit bake "$extra/VertexColorTest/glTF/VertexColorTest.gltf" --lights assets/demo/lights.json --mode multiply \
     --color-format float -o "$out/VertexColorTest-multiply.gltf" -q
 fi
-# A mesh file (OBJ through OpenMesh) baked into a new glTF document: a small tetrahedron written
-# here, and the Stanford bunny when VLIT_EXTRA_ASSETS has it.
+# Mesh files baked into a new glTF document: a small tetrahedron written here, a floor under an
+# emitter whose .mtl Ke (5, 4, 3) needs KHR_materials_emissive_strength (docs/mesh-files.md), and
+# the Stanford bunny when VLIT_EXTRA_ASSETS has it.
 printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n' > "$out/tetrahedron.obj"
 $vlit bake "$out/tetrahedron.obj" --lights assets/demo/lights.json -o "$out/tetrahedron.glb" -q
 rm "$out/tetrahedron.obj"
+printf 'newmtl floor\nKd 0.7 0.6 0.5\nNs 40\nnewmtl lamp\nKd 1 1 1\nKe 5 4 3\n' > "$out/lamp.mtl"
+printf 'mtllib lamp.mtl\nv 0 0 0\nv 0 0 2\nv 2 0 2\nv 2 0 0\nv 0.5 1 0.5\nv 1.5 1 0.5\nv 1.5 1 1.5\nv 0.5 1 1.5\nusemtl floor\nf 1 2 3 4\nusemtl lamp\nf 5 6 7 8\n' > "$out/lamp.obj"
+$vlit bake "$out/lamp.obj" -o "$out/lamp.glb" -q
+rm "$out/lamp.obj" "$out/lamp.mtl"
 bunny=${VLIT_EXTRA_ASSETS:-/nonexistent}/mesh/StanfordBunny/stanford-bunny.obj
 [[ -f $bunny ]] && $vlit bake "$bunny" --lights assets/demo/lights.json -o "$out/stanford-bunny.glb" -q
 node tests/validator/validate.js "$out"/*.glb "$out"/*.gltf

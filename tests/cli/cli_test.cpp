@@ -309,7 +309,7 @@ TEST_CASE("bake --specular-eye: a malformed eye is a one-line error") {
   CHECK_MESSAGE(ok.exit_code == 0, ok.err);
 }
 
-TEST_CASE("--target accepts COLOR_n or an application-specific _NAME; anything else is a usage error (exit 2)") {
+TEST_CASE("--target accepts COLOR_n or an application-specific _NAME, anything else is a usage error (exit 2)") {
   const auto dir = vlit::test::temp_dir("cli-target");
   const std::string bake = kVlit + " bake " + q(kDemo) + " --lights " + q(kDemoLights) + " -q --target ";
   for (const std::string bad : {"NORMAL", "foo", "COLOR_", "COLOR_01", "COLOR_x", "_", "color_0", "TEXCOORD_0"}) {

@@ -30,7 +30,7 @@ std::size_t summary_number(const std::string& err, const std::string& pattern) {
 
 }  // namespace
 
-TEST_CASE("render -o accepts only a .png name; anything else is a usage error before any work") {
+TEST_CASE("render -o accepts only a .png name, anything else is a usage error before any work") {
   const fs::path dir = vlit::test::temp_dir("render-ext");
   for (const std::string name : {"out.jpg", "out.png.tmp", "out"}) {
     CAPTURE(name);

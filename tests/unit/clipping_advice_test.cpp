@@ -13,7 +13,7 @@ TEST_CASE("exposures are rounded down to 3 significant digits, so that they stil
   for (double v : {0.1, 0.125, 1.0, 7.77, 1e-7, 3e12}) CHECK(round_down_significant(v, 3) <= v);
 }
 
-TEST_CASE("more than 2 % of the vertices clipped earns the advice; at most 2 % does not") {
+TEST_CASE("more than 2 % of the vertices clipped earns the advice, at most 2 % none") {
   BakeReport r;
   r.vertices = 100;
   r.clipped_vertices = 2;

@@ -33,6 +33,13 @@ for f in assets/samples/*/*.gltf; do
     done
   $vlit bake "$copy/$name.gltf" --lights assets/demo/lights.json -o "$out/$name.glb" -q
 done
+# A Draco-compressed input (Debian package draco), decoded by vlit and written uncompressed.
+if command -v draco_transcoder >/dev/null; then
+  draco_transcoder -i "$out/samples/Avocado/Avocado.gltf" -o "$out/samples/avocado-draco.glb" >/dev/null
+  $vlit bake "$out/samples/avocado-draco.glb" --lights assets/demo/lights.json -o "$out/avocado-draco.glb" -q
+else
+  echo "validate-baked: draco_transcoder not installed (package draco): no Draco input checked" >&2
+fi
 extra=${VLIT_EXTRA_ASSETS:-}/gltf
 if [[ -n ${VLIT_EXTRA_ASSETS:-} && -d $extra ]]; then
   for f in Box/glTF/Box.gltf BoxInterleaved/glTF-Binary/BoxInterleaved.glb SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf \

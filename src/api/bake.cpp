@@ -2,6 +2,7 @@
 // bake/bake_file.h), and meshes given as arrays (light_meshes).
 #include "api/api_internal.h"
 #include "bake/bake_file.h"
+#include "bake/clipping_advice.h"
 #include "bake/light_vertices.h"
 #include "bake/target_attribute.h"
 #include "bake/vertex_color_bake.h"
@@ -85,6 +86,8 @@ BakeSummary bake(tinygltf::Model& model, const Lights& lights, const BakeSetting
       warnings.push_back(name + ": " + std::to_string(report.specular_unrepresentable) +
                          " vertices have specular light in a channel whose base colour is 0; a multiplier of the "
                          "base colour cannot show it (left out)");
+    if (const std::string advice = clipping_advice(report, encode.exposure); !advice.empty())
+      warnings.push_back(name + ": " + advice);
     if (report.replaced_attributes > 0)
       warnings.push_back(name + ": " + (encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") + " the existing " +
                          encode.target + " of " + std::to_string(report.replaced_attributes) + " primitive(s)");

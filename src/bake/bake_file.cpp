@@ -3,6 +3,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "bake/clipping_advice.h"
 #include "bake/light_vertices.h"
 #include "core/input_error.h"
 #include "gltf/gltf_writer.h"
@@ -64,6 +65,8 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
     result.warnings.push_back(input + ": " + std::to_string(result.report.specular_unrepresentable) +
                               " vertices have specular light in a channel whose base colour is 0; a multiplier of the "
                               "base colour cannot show it (left out)");
+  if (const std::string advice = clipping_advice(result.report, options.encode.exposure); !advice.empty())
+    result.warnings.push_back(input + ": " + advice);
   if (result.report.replaced_attributes > 0)
     result.warnings.push_back(input + ": " + (options.encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") +
                               " the existing " + options.encode.target + " of " +

@@ -46,6 +46,7 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
                               const BakeOptions& options) {
   const std::string& file = options.source;
   BakeReport report;
+  std::vector<double> peaks;  // per vertex, its brightest RGB channel (unorm formats)
   const auto mesh_of_node = unshare_meshes(model, scene, report.duplicated_meshes);
 
   // All colours go into one new buffer.
@@ -122,6 +123,8 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
       std::vector<std::uint8_t> codes8;
       for (std::size_t v = 0; v < n; ++v) {
         bool clipped = false;
+        const double peak = std::max({rgba[v][0], rgba[v][1], rgba[v][2]});
+        peaks.push_back(peak > 0 ? peak : 0);  // also catches NaN
         for (int ch = 0; ch < 4; ++ch) {
           double x = rgba[v][ch];
           if (!(x >= 0)) x = 0;  // also catches NaN
@@ -187,6 +190,13 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
     if (!model.materials.empty() &&
         std::find(model.extensionsUsed.begin(), model.extensionsUsed.end(), unlit) == model.extensionsUsed.end())
       model.extensionsUsed.push_back(unlit);
+  }
+  if (!peaks.empty()) {
+    // The 99th percentile: the value at rank ceil(0.99 n) - 1 in ascending order.
+    const std::size_t rank = (peaks.size() * 99 + 99) / 100 - 1;
+    std::nth_element(peaks.begin(), peaks.begin() + static_cast<long>(rank), peaks.end());
+    report.brightest_channel_p99 = peaks[rank];
+    report.brightest_channel = *std::max_element(peaks.begin() + static_cast<long>(rank), peaks.end());
   }
   return report;
 }

@@ -37,6 +37,11 @@ struct BakeReport {
   // base colour cannot show it (the specular of that channel is left out).
   std::size_t specular_unrepresentable = 0;
   std::size_t clipped_vertices = 0;     // a channel above 1 clamped (unorm formats only)
+  // Unorm formats: the brightest RGB channel of a vertex (after exposure), over all vertices, and
+  // the value 99 % of the vertices stay at or below; exposure / each is the exposure that fits all
+  // of them, or 99 %, into [0, 1] (the stored colour is linear in the exposure).
+  double brightest_channel = 0;
+  double brightest_channel_p99 = 0;
   double max_quantization_error = 0;    // largest |stored - exact| over unclipped channels
   std::size_t replaced_attributes = 0;  // primitives whose existing target attribute was replaced or multiplied
   std::size_t duplicated_meshes = 0;

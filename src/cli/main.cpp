@@ -4,6 +4,7 @@
 
 #include "cli/commands.h"
 #include "cli/openmp_wait_policy.h"
+#include "cli/option_suggestion.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
 #include "core/version.h"
@@ -25,6 +26,18 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::ExtrasError& e) {
+    // An unknown option or command: name the closest known one.
+    std::cerr << e.what() << vlit::cli::did_you_mean(app) << "\nRun with --help for more information.\n";
+    return 2;
+  } catch (const CLI::RequiredError& e) {
+    // "vlit bkae ...": CLI11 reports the missing command; name the one that was mistyped.
+    if (app.get_subcommands().empty() && argc > 1 && argv[1][0] != '-') {
+      std::cerr << "Unknown command \"" << argv[1] << "\"" << vlit::cli::did_you_mean_command(app, argv[1])
+                << "\nRun with --help for more information.\n";
+      return 2;
+    }
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const CLI::ParseError& e) {
     // --help and --version exit 0; every usage error exits 2 (README "Exit status").
     return app.exit(e) == 0 ? 0 : 2;

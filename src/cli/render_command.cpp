@@ -1,8 +1,10 @@
 // vlit render IN --lights LIGHTS.json -o OUT.png [--width W --height H] [--samples N] ...
 // Lights every vertex (diffuse and specular towards the camera), then rasterizes with Gouraud
 // shading: vertex colour = kd x diffuse light + ks x specular light.
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 #include "bake/light_vertices.h"
@@ -160,7 +162,16 @@ Runner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Light every vertex and rasterize with Gouraud shading to an sRGB PNG.");
   cmd->add_option("input", args->input, "Input asset (.gltf or .glb)")->required()->check(CLI::ExistingFile);
-  cmd->add_option("-o,--output", args->output, "Output PNG; written atomically")->required();
+  cmd->add_option("-o,--output", args->output, "Output PNG (FILE.png); written atomically")
+      ->required()
+      ->check(CLI::Validator(
+          [](const std::string& path) {
+            std::string ext = std::filesystem::path(path).extension().string();
+            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            return ext == ".png" ? std::string()
+                                 : "\"" + path + "\": render writes PNG images only; name the output FILE.png";
+          },
+          "FILE.png"));
   cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")->check(CLI::ExistingFile);
   cmd->add_option("--width", args->width, "Image width in pixels (default 800)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", args->height, "Image height in pixels (default 600)")->check(CLI::Range(1, 16384));

@@ -126,6 +126,39 @@ json& array_field(json& root, const char* key) {
   return root[key];
 }
 
+// Replaces the accessor's min and max by those of its decoded values (glTF requires them to be
+// exact; Draco's quantization moves the extremes slightly, so the encoder's bounds no longer
+// hold). Sets them when `required` (POSITION) even if the file had none.
+void refresh_bounds(json& acc, const std::string& bytes, int component_type, int components, std::size_t stride,
+                    std::size_t count, bool required) {
+  if (!required && !acc.contains("min") && !acc.contains("max")) return;
+  if (count == 0) {
+    acc.erase("min");
+    acc.erase("max");
+    return;
+  }
+  std::vector<double> lo(static_cast<std::size_t>(components), 0), hi(static_cast<std::size_t>(components), 0);
+  for (std::size_t i = 0; i < count; ++i)
+    for (int c = 0; c < components; ++c) {
+      const char* p = bytes.data() + i * stride;
+      double v = 0;
+      switch (component_type) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p + 4 * c, 4); v = f; break; }
+        case TINYGLTF_COMPONENT_TYPE_BYTE: v = static_cast<std::int8_t>(p[c]); break;
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: v = static_cast<std::uint8_t>(p[c]); break;
+        case TINYGLTF_COMPONENT_TYPE_SHORT: { std::int16_t x; std::memcpy(&x, p + 2 * c, 2); v = x; break; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { std::uint16_t x; std::memcpy(&x, p + 2 * c, 2); v = x; break; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { std::uint32_t x; std::memcpy(&x, p + 4 * c, 4); v = x; break; }
+        default: return;
+      }
+      const std::size_t k = static_cast<std::size_t>(c);
+      if (i == 0 || v < lo[k]) lo[k] = v;
+      if (i == 0 || v > hi[k]) hi[k] = v;
+    }
+  acc["min"] = lo;
+  acc["max"] = hi;
+}
+
 const char* const kMeshoptExtensions[] = {"EXT_meshopt_compression", "KHR_meshopt_compression"};
 const char* const kDraco = "KHR_draco_mesh_compression";
 
@@ -283,7 +316,10 @@ class Decompressor {
             throw InputError(name_, "index accessor count " + std::to_string(indices.value("count", 0)) + " differs from the " +
                                         std::to_string(draco.index_count()) + " indices Draco decoded", where);
           const int type = indices.value("componentType", 0);
-          indices["bufferView"] = add_view(draco.indices(type), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, 0);
+          std::string values = draco.indices(type);
+          const std::size_t size = static_cast<std::size_t>(std::max(0, tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(type))));
+          refresh_bounds(indices, values, type, 1, size, draco.index_count(), false);
+          indices["bufferView"] = add_view(std::move(values), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER, 0);
           indices.erase("byteOffset");
           filled[index_accessor] = true;
         }
@@ -316,8 +352,9 @@ class Decompressor {
           // glTF aligns every vertex attribute element to 4 bytes; a padded stride is written out.
           const std::size_t element = size * static_cast<std::size_t>(components);
           const std::size_t stride = (element + 3) / 4 * 4;
-          acc["bufferView"] = add_view(draco.attribute(id.get<int>(), component_type, components, stride),
-                                       TINYGLTF_TARGET_ARRAY_BUFFER, stride != element ? stride : 0);
+          std::string values = draco.attribute(id.get<int>(), component_type, components, stride);
+          refresh_bounds(acc, values, component_type, components, stride, draco.point_count(), semantic == "POSITION");
+          acc["bufferView"] = add_view(std::move(values), TINYGLTF_TARGET_ARRAY_BUFFER, stride != element ? stride : 0);
           acc.erase("byteOffset");
           filled[a] = true;
         }

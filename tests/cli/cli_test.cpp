@@ -289,7 +289,11 @@ TEST_CASE("batch progress: a rate and ETA line on a terminal only, never with --
   const auto quiet = in_terminal("-q -o " + (dir / "c").string());
   CHECK(quiet.exit_code == 0);
   CHECK(quiet.out.find("files/s") == std::string::npos);
-  CHECK(quiet.out.find('\r') == std::string::npos);
+  // The terminal ends lines (the demo's clipping warning) with \r\n; a progress line would
+  // return the cursor with a \r of its own.
+  std::string lines = quiet.out;
+  for (std::size_t at = lines.find("\r\n"); at != std::string::npos; at = lines.find("\r\n", at)) lines.erase(at, 1);
+  CHECK(lines.find('\r') == std::string::npos);
 }
 
 TEST_CASE("bake --specular-eye: a malformed eye is a one-line error") {
@@ -305,7 +309,7 @@ TEST_CASE("bake --specular-eye: a malformed eye is a one-line error") {
   CHECK_MESSAGE(ok.exit_code == 0, ok.err);
 }
 
-TEST_CASE("--target accepts COLOR_n or an application-specific _NAME; anything else is a usage error (exit 2)") {
+TEST_CASE("--target accepts COLOR_n or an application-specific _NAME, anything else is a usage error (exit 2)") {
   const auto dir = vlit::test::temp_dir("cli-target");
   const std::string bake = kVlit + " bake " + q(kDemo) + " --lights " + q(kDemoLights) + " -q --target ";
   for (const std::string bad : {"NORMAL", "foo", "COLOR_", "COLOR_01", "COLOR_x", "_", "color_0", "TEXCOORD_0"}) {

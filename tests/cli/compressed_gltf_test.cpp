@@ -80,6 +80,18 @@ std::vector<BakedVertex> bake(const fs::path& in, const fs::path& lights, const 
   for (const auto& mesh : baked.model.meshes)
     for (const auto& prim : mesh.primitives) {
       const auto p = read_accessor_as_doubles(baked.model, prim.attributes.at("POSITION"), out.string());
+      // POSITION's min and max must be its values' exact bounds (glTF 2.0 3.6.2.5; the
+      // glTF-Validator's ACCESSOR_MAX_MISMATCH): Draco's quantization moves them.
+      const tinygltf::Accessor& position = baked.model.accessors[prim.attributes.at("POSITION")];
+      REQUIRE(position.minValues.size() == 3);
+      REQUIRE(position.maxValues.size() == 3);
+      for (int k = 0; k < 3; ++k) {
+        double lo = p[k], hi = p[k];
+        for (std::size_t i = k; i < p.size(); i += 3) lo = std::min(lo, p[i]), hi = std::max(hi, p[i]);
+        // Compared as the float32 the values are (a file may write 0.02128091 for the float nearest it).
+        CHECK(static_cast<float>(position.minValues[k]) == static_cast<float>(lo));
+        CHECK(static_cast<float>(position.maxValues[k]) == static_cast<float>(hi));
+      }
       const auto n = read_accessor_as_doubles(baked.model, prim.attributes.at("NORMAL"), out.string());
       REQUIRE(prim.attributes.count("COLOR_0"));
       const int color = prim.attributes.at("COLOR_0");

@@ -26,7 +26,7 @@ std::size_t count(const std::string& text, const std::string& what) {
 
 }  // namespace
 
-TEST_CASE("bake warns about every light that reaches no vertex, with why; --explain counts it right") {
+TEST_CASE("bake warns about every light that reaches no vertex, with why, and --explain counts it right") {
   const fs::path dir = vlit::test::temp_dir("light-reach");
   // A 1 x 1 floor in z = 0 facing +Z.
   vlit::test::GltfBuilder b;

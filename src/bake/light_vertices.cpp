@@ -78,6 +78,10 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
   std::vector<int> batch_lights;
   std::optional<OccluderBvh> occluders;  // built only when the plan shadows some pair
   if (plan.needs_occluders) occluders.emplace(occluders_of(scene));
+  // Vertices sharing a position with others: the wedges across creases (crease_wedges.h).
+  std::optional<SharedPositions> shared;
+  if (occluders && options.crease_wedges) shared.emplace(scene);
+  CreaseWedges wedges;
   for (std::size_t pi = 0; pi < scene.primitives.size(); ++pi) {
     const ScenePrimitive& prim = scene.primitives[pi];
     const double shininess = phong_from_metallic_roughness(scene.material_of(prim)).shininess;
@@ -90,8 +94,12 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
     const std::vector<int>& lights_here = plan.lights_of_primitive[pi];
     auto shadowed = [&](std::size_t k) { return occluders && plan.shadowed_of_primitive[pi][k]; };
     batch_lights.clear();
-    for (std::size_t k = 0; k < lights_here.size(); ++k)
+    bool any_shadowed = false;
+    for (std::size_t k = 0; k < lights_here.size(); ++k) {
       if (!shadowed(k) && plan.batch_of_light[lights_here[k]].light) batch_lights.push_back(lights_here[k]);
+      any_shadowed = any_shadowed || shadowed(k);
+    }
+    wedges = shared && any_shadowed ? shared->wedges_of(pi) : CreaseWedges{};
     for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
       if (request.cancel && request.cancel->load()) return out;
       const auto chunk_start = std::chrono::steady_clock::now();
@@ -110,7 +118,7 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         Vec3d* spec_out = options.with_specular ? specular.data() : nullptr;
         if (shadowed(k))
           accumulate_light_shadowed(light, options, points.data(), count, diffuse.data(), spec_out, *occluders,
-                                    request.cancel);
+                                    request.cancel, &wedges, begin);
         else if (!plan.batch_of_light[lights_here[k]].light)
           accumulate_light(light, options, points.data(), count, diffuse.data(), spec_out);
       }

@@ -34,6 +34,10 @@ struct ShadeOptions {
   // (src/shadow/silhouette_cluster.h) instead of once per vertex; same results. Off: the
   // benchmarks' baseline.
   bool shadow_clusters = true;
+  // A mesh vertex is also hidden by the wedges of triangles that touch it across a crease or a
+  // seam (src/shadow/crease_wedges.h). Off: every triangle touching the vertex's position hides
+  // nothing (the behaviour before; for comparisons).
+  bool crease_wedges = true;
 };
 
 template <class T>

@@ -6,8 +6,6 @@
 namespace vlit {
 namespace {
 
-constexpr double kPieceAreaFloor = 1e-12;
-
 double twice_area(const Vec3d* d, int n) {
   Vec3d a{};
   for (int i = 0; i < n; ++i) a += cross(d[i], d[(i + 1) % n]);
@@ -69,6 +67,58 @@ ConvexVolume area_shadow_volume(const PreparedAreaLight<double>& light, const Ar
   return area_shadow_volume(light, view, light_rectangle(view, horizon_clipped), p);
 }
 
+bool subtract_cone(const LightPieces& pieces, const Vec3d* cone_normal, int planes, const Rect2& shadow,
+                   const AreaView<double>& view, double area_floor, LightPieces& next) {
+  ClipPolygon<double> buffer_a, buffer_b, outside;
+  bool cut = false;
+  next.clear();
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const Vec3d* d = pieces.points.data() + pieces.start[i];
+    const int n = pieces.start[i + 1] - pieces.start[i];
+    // A piece that does not meet the cone is kept whole: first the cheap tests (disjoint
+    // rectangles; all its corners outside one plane), then the exact one (its part inside
+    // every plane is empty or of negligible area). Cutting a piece the cone misses would
+    // only fragment it.
+    bool untouched = !pieces.rect[i].overlaps(shadow);
+    for (int j = 0; j < planes && !untouched; ++j) {
+      const double offset = dot(cone_normal[j], view.D);
+      bool all_out = true;
+      for (int v = 0; v < n && all_out; ++v) all_out = dot(cone_normal[j], d[v]) + offset <= 0;
+      untouched = all_out;
+    }
+    if (!untouched) {
+      ClipPolygon<double>* rest = &buffer_a;
+      ClipPolygon<double>* tmp = &buffer_b;
+      rest->count = n;
+      std::copy(d, d + n, rest->d.begin());
+      for (int j = 0; j < planes && rest->count >= 3; ++j) {
+        clip_halfspace(rest->d.data(), rest->count, cone_normal[j], dot(cone_normal[j], view.D), *tmp);
+        std::swap(rest, tmp);
+      }
+      untouched = rest->count < 3 || !(twice_area(rest->d.data(), rest->count) > area_floor);
+    }
+    if (untouched) {
+      next.add(d, n, pieces.rect[i]);
+      continue;
+    }
+    cut = true;
+    ClipPolygon<double>* rest = &buffer_a;
+    ClipPolygon<double>* tmp = &buffer_b;
+    rest->count = n;
+    std::copy(d, d + n, rest->d.begin());
+    for (int j = 0; j < planes && rest->count >= 3; ++j) {
+      const double offset = dot(cone_normal[j], view.D);
+      clip_halfspace(rest->d.data(), rest->count, -cone_normal[j], -offset, outside);
+      if (outside.count >= 3 && twice_area(outside.d.data(), outside.count) > area_floor)
+        next.add(outside.d.data(), outside.count, view.u, view.v);
+      clip_halfspace(rest->d.data(), rest->count, cone_normal[j], offset, *tmp);
+      std::swap(rest, tmp);
+    }
+    // What is left in `rest` is inside the cone: hidden.
+  }
+  return cut;
+}
+
 AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const AreaView<double>& view,
                                    const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
                                    const OccluderBvh& occluders, AreaShadowScratch& scratch) {
@@ -78,7 +128,7 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
 
   const AreaSlab slab = area_slab(light, view, p);
   const std::vector<HalfSpace> slab_planes{slab.beyond_light, slab.before_p};
-  const double area_floor = kPieceAreaFloor * 2 * light.area;
+  const double area_floor = piece_area_floor(light);
   LightPieces& pieces = scratch.pieces;
   LightPieces& next = scratch.next;
   pieces.clear();
@@ -125,55 +175,9 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
     return a.index < b.index;
   });
 
-  ClipPolygon<double> buffer_a, buffer_b, outside;
   for (const OccluderCone& cone : cones) {
     if (pieces.size() == 0) break;  // fully hidden
-    const int planes = cone.planes;
-    const auto& cone_normal = cone.normal;
-    next.clear();
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-      const Vec3d* d = pieces.points.data() + pieces.start[i];
-      const int n = pieces.start[i + 1] - pieces.start[i];
-      // A piece that does not meet the cone is kept whole: first the cheap tests (disjoint
-      // rectangles; all its corners outside one plane), then the exact one (its part inside
-      // every plane is empty or of negligible area). Cutting a piece the cone misses would
-      // only fragment it.
-      bool untouched = !pieces.rect[i].overlaps(cone.shadow);
-      for (int j = 0; j < planes && !untouched; ++j) {
-        const double offset = dot(cone_normal[j], view.D);
-        bool all_out = true;
-        for (int v = 0; v < n && all_out; ++v) all_out = dot(cone_normal[j], d[v]) + offset <= 0;
-        untouched = all_out;
-      }
-      if (!untouched) {
-        ClipPolygon<double>* rest = &buffer_a;
-        ClipPolygon<double>* tmp = &buffer_b;
-        rest->count = n;
-        std::copy(d, d + n, rest->d.begin());
-        for (int j = 0; j < planes && rest->count >= 3; ++j) {
-          clip_halfspace(rest->d.data(), rest->count, cone_normal[j], dot(cone_normal[j], view.D), *tmp);
-          std::swap(rest, tmp);
-        }
-        untouched = rest->count < 3 || !(twice_area(rest->d.data(), rest->count) > area_floor);
-      }
-      if (untouched) {
-        next.add(d, n, pieces.rect[i]);
-        continue;
-      }
-      ClipPolygon<double>* rest = &buffer_a;
-      ClipPolygon<double>* tmp = &buffer_b;
-      rest->count = n;
-      std::copy(d, d + n, rest->d.begin());
-      for (int j = 0; j < planes && rest->count >= 3; ++j) {
-        const double offset = dot(cone_normal[j], view.D);
-        clip_halfspace(rest->d.data(), rest->count, -cone_normal[j], -offset, outside);
-        if (outside.count >= 3 && twice_area(outside.d.data(), outside.count) > area_floor)
-          next.add(outside.d.data(), outside.count, view.u, view.v);
-        clip_halfspace(rest->d.data(), rest->count, cone_normal[j], offset, *tmp);
-        std::swap(rest, tmp);
-      }
-      // What is left in `rest` is inside the cone: hidden.
-    }
+    subtract_cone(pieces, cone.normal.data(), cone.planes, cone.shadow, view, area_floor, next);
     std::swap(pieces, next);
   }
   return AreaVisibility::kPieces;

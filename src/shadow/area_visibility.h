@@ -88,6 +88,17 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
                                    const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
                                    const OccluderBvh& occluders, AreaShadowScratch& scratch);
 
+// Replaces `pieces` minus the cone from P whose inside is dot(cone_normal[j], x - P) >= 0 for
+// j < planes (planes through P) into `next` (cleared first); `shadow` bounds the cone's trace on
+// the light's plane in the view's (u, v) (an unbounded Rect2 when unknown). Parts of area below
+// area_floor (twice the area) are dropped. True if some piece was cut; otherwise `next` holds
+// the same pieces.
+bool subtract_cone(const LightPieces& pieces, const Vec3d* cone_normal, int planes, const Rect2& shadow,
+                   const AreaView<double>& view, double area_floor, LightPieces& next);
+
+// Twice the area below which a visible piece of the light is dropped.
+inline double piece_area_floor(const PreparedAreaLight<double>& light) { return 1e-12 * 2 * light.area; }
+
 // The volume that the BVH is asked about (exposed for tests and the plan): the pyramid from P
 // over the rectangle `rect` (in the view's (u, v) relative to the light's centre; the bounding
 // rectangle of the horizon-clipped light in the second form), cut to the slab.

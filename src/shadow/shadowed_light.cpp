@@ -4,6 +4,7 @@
 
 #include "shadow/area_silhouette.h"
 #include "shadow/area_visibility.h"
+#include "shadow/crease_wedges.h"
 #include "shadow/linear_visibility.h"
 
 namespace vlit {
@@ -51,12 +52,52 @@ double linear_neighborhood_shadowed(const LinearLight<double>& light, const Shad
   return sum / k_samples;
 }
 
+// Removes from `visible` (sorted, disjoint [t_a, t_b] intervals) the parameters t whose point
+// Q(t) lies above P's horizon in one of the wedges seen from P; true if something was removed.
+bool remove_wedges(const LinearLight<double>& light, const ShadingPoint<double>& sp, std::span<const WedgeCone> wedges,
+                   std::vector<std::pair<double, double>>& visible) {
+  const Vec3d l0 = light.q0 - sp.p, ld = light.q1 - light.q0;
+  bool removed = false;
+  thread_local std::vector<std::pair<double, double>> kept;
+  for (const WedgeCone& wedge : wedges) {
+    // dot(k, L0 + t Ld) > 0 for the wedge's planes and the horizon's: one interval of t per
+    // plane, intersected.
+    double lo = 0, hi = 1;
+    for (const Vec3d& k : {wedge.inward[0], wedge.inward[1], wedge.inward[2], wedge.inward[3], sp.n}) {
+      const double c0 = dot(k, l0), c1 = dot(k, ld);
+      if (c1 == 0) {
+        if (c0 < 0) hi = -1;
+      } else if (c1 > 0) {
+        lo = std::max(lo, -c0 / c1);
+      } else {
+        hi = std::min(hi, -c0 / c1);
+      }
+    }
+    if (!(hi > lo)) continue;
+    kept.clear();
+    for (const auto& [a, b] : visible) {
+      if (b <= lo || a >= hi) {
+        kept.emplace_back(a, b);
+        continue;
+      }
+      removed = true;
+      if (a < lo) kept.emplace_back(a, lo);
+      if (b > hi) kept.emplace_back(hi, b);
+    }
+    visible.swap(kept);
+  }
+  return removed;
+}
+
 Response<double> shade_linear_shadowed(const LinearLight<double>& light, const ShadingPoint<double>& sp,
-                                       const ShadeOptions& options, const OccluderBvh& occluders) {
+                                       const ShadeOptions& options, const OccluderBvh& occluders,
+                                       std::span<const WedgeCone> wedges) {
   const SpecularOptions spec = effective_specular(options);
   thread_local LinearShadowScratch scratch;
-  if (visible_linear_intervals(light, sp.p, occluders, scratch) == LinearVisibility::kUnoccluded)
-    return shade_linear(light, sp, spec, options.linear);
+  const bool unoccluded = visible_linear_intervals(light, sp.p, occluders, scratch) == LinearVisibility::kUnoccluded;
+  if (unoccluded) scratch.visible.assign(1, {0.0, 1.0});
+  const bool wedged = !wedges.empty() && remove_wedges(light, sp, wedges, scratch.visible);
+  if (unoccluded && !wedged) return shade_linear(light, sp, spec, options.linear);
   Response<double> sum;
   const Vec3d ld = light.q1 - light.q0;
   SpecularOptions piece_spec = spec;
@@ -81,7 +122,8 @@ Response<double> shade_linear_shadowed(const LinearLight<double>& light, const S
 template <class Unoccluded>
 Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, const ShadingPoint<double>& sp,
                                      const ShadeOptions& options, const OccluderBvh& occluders,
-                                     const SilhouetteCluster* cluster, const Unoccluded& unoccluded) {
+                                     const SilhouetteCluster* cluster, std::span<const WedgeCone> wedges,
+                                     const Unoccluded& unoccluded) {
   const SpecularOptions spec = effective_specular(options);
   const AreaView<double> view = make_area_view(light, sp.p);
   if (!view.lit) return {};
@@ -91,18 +133,43 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   thread_local AreaShadowScratch scratch;
   thread_local AreaSilhouetteScratch silhouette;
   const LightPieces* visible = nullptr;
+  bool nothing_reaches = false;  // no occluder reaches between P and the light
   if (options.area_shadows == AreaShadowMethod::kSilhouette) {
     switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette, cluster)) {
-      case SilhouetteVisibility::kUnoccluded: return unoccluded();
+      case SilhouetteVisibility::kUnoccluded: nothing_reaches = true; break;
       case SilhouetteVisibility::kPieces: visible = &silhouette.pieces; break;
       case SilhouetteVisibility::kUndecided: break;
     }
   }
-  if (!visible) {
+  if (!visible && !nothing_reaches) {
     if (visible_area_pieces(light, view, horizon, sp.p, occluders, scratch) == AreaVisibility::kUnoccluded)
-      return unoccluded();
-    visible = &scratch.pieces;
+      nothing_reaches = true;
+    else
+      visible = &scratch.pieces;
   }
+  if (!wedges.empty()) {
+    // The wedges of triangles across a crease (crease_wedges.h): cones from P, subtracted as the
+    // occluders' cones are.
+    thread_local LightPieces whole, cut[2];
+    if (nothing_reaches) {
+      whole.clear();
+      whole.add(horizon.d.data(), horizon.count, view.u, view.v);
+    }
+    const LightPieces* from = nothing_reaches ? &whole : visible;
+    const Rect2 anywhere{-1e300, 1e300, -1e300, 1e300};
+    int next = 0;
+    for (const WedgeCone& wedge : wedges) {
+      if (subtract_cone(*from, wedge.inward.data(), 4, anywhere, view, piece_area_floor(light), cut[next])) {
+        from = &cut[next];
+        next = 1 - next;
+      }
+    }
+    if (from != &whole) {
+      visible = from;
+      nothing_reaches = false;
+    }
+  }
+  if (nothing_reaches) return unoccluded();
   const LightPieces& pieces = *visible;
   Response<double> r;
   ClipPolygon<double> piece;
@@ -184,14 +251,15 @@ PreparedAreaLight<double> shadowed_polygon(const PreparedDiskLight<double>& disk
 
 template <class K>
 Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& sp, const ShadeOptions& options,
-                                       const OccluderBvh& occluders, const SilhouetteCluster* cluster) {
+                                       const OccluderBvh& occluders, const SilhouetteCluster* cluster,
+                                       std::span<const WedgeCone> wedges) {
   if constexpr (std::is_same_v<K, LinearLight<double>>) {
-    return shade_linear_shadowed(k, sp, options, occluders);
+    return shade_linear_shadowed(k, sp, options, occluders, wedges);
   } else if constexpr (std::is_same_v<K, PreparedAreaLight<double>>) {
-    return shade_area_shadowed(k, sp, options, occluders, cluster,
+    return shade_area_shadowed(k, sp, options, occluders, cluster, wedges,
                                [&] { return shade_area(k, sp, effective_specular(options)); });
   } else if constexpr (std::is_same_v<K, PreparedDiskLight<double>>) {
-    return shade_area_shadowed(shadowed_polygon(k), sp, options, occluders, cluster,
+    return shade_area_shadowed(shadowed_polygon(k), sp, options, occluders, cluster, wedges,
                                [&] { return shade_kernel<double>(k, sp, options); });
   } else {
     const Response<double> r = shade_kernel<double>(k, sp, options);
@@ -202,28 +270,30 @@ Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& s
     } else {
       target = k.position;  // point, spot
     }
+    for (const WedgeCone& wedge : wedges)
+      if (wedge.contains(target - sp.p)) return {};
     return occluders.segment_occluded(sp.p, target, sp.p) ? Response<double>{} : r;
   }
 }
 
 template Response<double> shade_kernel_shadowed(const PointLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>);
 template Response<double> shade_kernel_shadowed(const DirectionalLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>);
 template Response<double> shade_kernel_shadowed(const SpotLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>);
 template Response<double> shade_kernel_shadowed(const LinearLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>);
 template Response<double> shade_kernel_shadowed(const PreparedAreaLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>);
 template Response<double> shade_kernel_shadowed(const PreparedDiskLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>);
 
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
                                 const ShadeOptions& options, const OccluderBvh& occluders) {

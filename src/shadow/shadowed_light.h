@@ -23,7 +23,10 @@
 // nothing hides gives bit-identical results with shadows on or off.
 #pragma once
 
+#include <span>
+
 #include "shading/prepared_light.h"
+#include "shadow/crease_wedges.h"
 #include "shadow/occluder_bvh.h"
 
 namespace vlit {
@@ -33,9 +36,12 @@ struct SilhouetteCluster;
 // cluster: for area and disk lights by silhouettes, a cluster holding sp (silhouette_cluster.h,
 // prepared for shadowed_polygon(kernel)) whose lists replace the per-vertex search; ignored
 // otherwise.
+// wedges: the cones that triangles across a crease hide from sp when it is a mesh vertex
+// (crease_wedges.h); empty for other points.
 template <class K>
 Response<double> shade_kernel_shadowed(const K& kernel, const ShadingPoint<double>& sp, const ShadeOptions& options,
-                                       const OccluderBvh& occluders, const SilhouetteCluster* cluster = nullptr);
+                                       const OccluderBvh& occluders, const SilhouetteCluster* cluster = nullptr,
+                                       std::span<const WedgeCone> wedges = {});
 
 // The polygon whose visible part is computed: the light itself, or a disk's equal-area regular
 // 64-gon.

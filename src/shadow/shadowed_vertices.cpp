@@ -50,10 +50,10 @@ std::vector<std::uint32_t> morton_order(const ShadingPoint<double>* points, long
 template <class K>
 void shade_vertex(const PreparedLight<double>& light, const K& kernel, const ShadeOptions& options,
                   const ShadingPoint<double>& sp, Vec3d& diffuse, Vec3d* specular, const OccluderBvh& occluders,
-                  const SilhouetteCluster* cluster) {
+                  const SilhouetteCluster* cluster, std::span<const WedgeCone> wedges) {
   const double window = range_window(light, sp.p);
   if (window <= 0) return;
-  const Response<double> r = shade_kernel_shadowed(kernel, sp, options, occluders, cluster);
+  const Response<double> r = shade_kernel_shadowed(kernel, sp, options, occluders, cluster, wedges);
   diffuse += light.radiance * (r.diffuse * window);
   if (specular) *specular += light.radiance * (r.specular * window);
 }
@@ -62,8 +62,10 @@ void shade_vertex(const PreparedLight<double>& light, const K& kernel, const Sha
 
 void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOptions& options,
                                const ShadingPoint<double>* points, long count, Vec3d* diffuse, Vec3d* specular,
-                               const OccluderBvh& occluders, const std::atomic<bool>* cancel) {
+                               const OccluderBvh& occluders, const std::atomic<bool>* cancel,
+                               const CreaseWedges* wedges, std::size_t first_vertex) {
   auto cancelled = [&] { return cancel && cancel->load(std::memory_order_relaxed); };
+  auto wedges_of = [&](long v) { return wedges ? wedges->of(first_vertex + v) : std::span<const WedgeCone>{}; };
   std::visit(
       [&](const auto& kernel) {
         using K = std::decay_t<decltype(kernel)>;
@@ -83,7 +85,7 @@ void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOp
             for (int i = 0; i < n; ++i) {
               const std::uint32_t v = order[begin + i];
               shade_vertex(light, kernel, options, points[v], diffuse[v], specular ? specular + v : nullptr, occluders,
-                           &cluster);
+                           &cluster, wedges_of(v));
             }
           }
           return;
@@ -95,7 +97,7 @@ void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOp
           if (cancelled()) continue;
           for (long v = b * kBlock; v < std::min(count, (b + 1) * kBlock); ++v)
             shade_vertex(light, kernel, options, points[v], diffuse[v], specular ? specular + v : nullptr, occluders,
-                         nullptr);
+                         nullptr, wedges_of(v));
         }
       },
       light.kernel);

@@ -13,12 +13,16 @@
 #include <atomic>
 
 #include "shading/prepared_light.h"
+#include "shadow/crease_wedges.h"
 #include "shadow/occluder_bvh.h"
 
 namespace vlit {
 
+// wedges (may be null): the crease wedges of the points' primitive (crease_wedges.h), whose
+// vertex first_vertex + i is points[i].
 void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOptions& options,
                                const ShadingPoint<double>* points, long count, Vec3d* diffuse, Vec3d* specular,
-                               const OccluderBvh& occluders, const std::atomic<bool>* cancel = nullptr);
+                               const OccluderBvh& occluders, const std::atomic<bool>* cancel = nullptr,
+                               const CreaseWedges* wedges = nullptr, std::size_t first_vertex = 0);
 
 }  // namespace vlit

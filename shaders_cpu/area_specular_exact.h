@@ -66,7 +66,7 @@ R lobe_per_azimuth(const Vec3<R>& x, const Vec3<R>& rv, R m, bool tail = false) 
   if (!(r > R(0))) return R(0);
   if (tail) {
     if (!(perp2 > R(0))) return R(0);
-    if (!(rx > R(0))) return m == R(0) ? rx / r / perp2 : R(0);
+    if (!(rx > R(0))) return R(0);  // the tail form runs for m > 0 only: max(0, c)^{m+1} = 0
     return std::exp((m + R(1)) * std::log(rx / r)) / perp2;
   }
   if (!(rx > R(0))) {  // only for m = 0 (no lobe clip): 1 - c, c <= 0

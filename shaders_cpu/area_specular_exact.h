@@ -25,12 +25,13 @@
 //     When Rv is outside the visible light the "1" part sums to 0 exactly (winding number 0) and
 //     only the tail is integrated: Is = orient Σ_i Rv.(a_i x b_i) / (m + 1) ∫ c^{m+1} / |Rv x x|^2 dt
 //     (no cancellation of terms ~ 1 / (m + 1) down to a tiny value).
-//  3. globally adaptive Gauss-Kronrod (7/15 points) over all edges: each edge starts split at the
+//  3. globally adaptive Gauss-Kronrod (7/15 points, adaptive_kronrod.h) over all edges: each edge starts split at the
 //     point closest to P (the 1/|x|^2 peak, width ~ its distance d_P: graded cuts at d_P 4^k) and at
 //     the point closest in angle to Rv (the lobe, width ~ |x| / sqrt(m + 1): graded likewise);
 //     the piece with the largest |K15 - G7| is bisected until Σ error <= tol |Σ value|
 //     (tol = SpecularOptions::exact_tolerance) or the fixed work list is full.
 //  The work list is a fixed array (kExactMaxPieces * 48 bytes = 96 KiB of stack): no heap.
+//  Initial cuts: at most 48 per edge (kExactMaxCuts).
 //
 // Departures: none from the definition; the paper's Is is the peak (area_specular_peak.h).
 // Stiff cases: tests/kernels/area/area_specular_test.cpp "stiff exact specular cases" (tiny,
@@ -43,36 +44,16 @@
 #include <cmath>
 #include <limits>
 
+#include "adaptive_kronrod.h"
 #include "area_polygon.h"
 #include "area_specular_peak.h"
 
 namespace vlit {
 
 inline constexpr int kExactMaxPieces = 2048;
+inline constexpr int kExactMaxCuts = 48;  // initial cut points per edge, its ends included
 
 namespace area_exact_detail {
-
-template <class R>
-struct Piece {
-  R t0, t1, value, error;
-  int edge;
-};
-
-// Gauss-Kronrod 7/15 on [-1, 1]: Kronrod nodes (positive half, the last is 0) and weights; the
-// Gauss nodes are the odd-indexed Kronrod nodes.
-template <class R>
-struct Kronrod15 {
-  static constexpr R x[8] = {R(0.991455371120812639206854697526329), R(0.949107912342758524526189684047851),
-                             R(0.864864423359769072789712788640926), R(0.741531185599394439863864773280788),
-                             R(0.586087235467691130294144845693013), R(0.405845151377397166906606412076961),
-                             R(0.207784955007898467600689403773245), R(0)};
-  static constexpr R wk[8] = {R(0.022935322010529224963732008058970), R(0.063092092629978553290700663189204),
-                              R(0.104790010322250183839876322541518), R(0.140653259715525918745189590510238),
-                              R(0.169004726639267902826583426598550), R(0.190350578064785409913256402421014),
-                              R(0.204432940075298892414161999234649), R(0.209482141084727828012999174891714)};
-  static constexpr R wg[4] = {R(0.129484966168869693270611432679082), R(0.279705391489276667901467771423780),
-                              R(0.381830050505118944950369775488975), R(0.417959183673469387755102040816327)};
-};
 
 // (1 - c^{m+1}) / |Rv x x|^2 at the point x (relative to P), c = Rv.x / |x|: the radial integral
 // of the lobe per unit azimuth about Rv, divided by |Rv x x|^2 (dphi = Rv.(x x dx) / |Rv x x|^2).
@@ -85,7 +66,7 @@ R lobe_per_azimuth(const Vec3<R>& x, const Vec3<R>& rv, R m, bool tail = false) 
   if (!(r > R(0))) return R(0);
   if (tail) {
     if (!(perp2 > R(0))) return R(0);
-    if (!(rx > R(0))) return m == R(0) ? rx / r / perp2 : R(0);
+    if (!(rx > R(0))) return R(0);  // the tail form runs for m > 0 only: max(0, c)^{m+1} = 0
     return std::exp((m + R(1)) * std::log(rx / r)) / perp2;
   }
   if (!(rx > R(0))) {  // only for m = 0 (no lobe clip): 1 - c, c <= 0
@@ -107,24 +88,6 @@ struct EdgeIntegrand {
   bool tail = false;
   R operator()(R t) const { return lobe_per_azimuth(a + e * t, rv, m, tail); }
 };
-
-template <class R, class F>
-void evaluate(const F& f, Piece<R>& p) {
-  using K = Kronrod15<R>;
-  const R mid = (p.t0 + p.t1) / 2, half = (p.t1 - p.t0) / 2;
-  const R f0 = f(mid);
-  R k = K::wk[7] * f0, g = K::wg[3] * f0;
-  for (int i = 0; i < 7; ++i) {
-    const R s = f(mid - half * K::x[i]) + f(mid + half * K::x[i]);
-    k += K::wk[i] * s;
-    if (i % 2 == 1) g += K::wg[i / 2] * s;
-  }
-  p.value = k * half;
-  p.error = std::abs((k - g) * half);
-}
-
-template <class R>
-bool less_error(const Piece<R>& a, const Piece<R>& b) { return a.error < b.error; }
 
 }  // namespace area_exact_detail
 
@@ -158,19 +121,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.
   std::array<EdgeIntegrand<R>, kMaxClipVertices> edge{};
   std::array<R, kMaxClipVertices> weight{};
-  std::array<Piece<R>, kExactMaxPieces> heap;
-  int size = 0;
-  R value = 0, error = 0;
-  auto push = [&](int i, R t0, R t1) {
-    Piece<R>& p = heap[size];
-    p.t0 = t0; p.t1 = t1; p.edge = i;
-    evaluate(edge[i], p);
-    p.value *= weight[i];
-    p.error *= std::abs(weight[i]);
-    value += p.value; error += p.error;
-    ++size;
-    std::push_heap(heap.begin(), heap.begin() + size, less_error<R>);
-  };
+  AdaptiveKronrod<R, kExactMaxPieces> quad;
   for (int i = 0; i < n; ++i) {
     const Vec3<R>& di = poly->d[i];
     const Vec3<R>& dj = poly->d[(i + 1) % n];
@@ -183,20 +134,10 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
     edge[i] = {view.D + di, e, rv, shininess, tail};
     weight[i] = w;
     // Initial cuts: graded around the point closest to P and the point closest in angle to Rv.
-    std::array<R, 48> cuts{};
-    int nc = 0;
-    cuts[nc++] = R(0);
-    cuts[nc++] = R(1);
-    auto add = [&](R t) { if (t > R(0) && t < R(1) && nc < int(cuts.size())) cuts[nc++] = t; };
-    auto graded = [&](R t, R width) {
-      if (!(width > R(0)) || !std::isfinite(t)) return;
-      add(t);
-      for (R s = width; s < R(1) && nc + 2 <= int(cuts.size()); s *= R(4)) { add(t - s); add(t + s); }
-    };
     const Vec3<R>& a = edge[i].a;
     const R len = std::sqrt(e2);
     const R tp = std::clamp(-dot(a, e) / e2, R(0), R(1));
-    graded(tp, length(a + e * tp) / len);
+    R centers[2] = {tp, tp}, widths[2] = {length(a + e * tp) / len, R(0)};
     if (shininess > R(0)) {
       // x(t) parallel to the projection of Rv on the edge's plane: a x w + t (e x w) = 0.
       const Vec3<R> pole = cr / length(cr);
@@ -207,37 +148,15 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
         // the integrand's peak width there: the lobe's, or (tail form) the angle to Rv if smaller
         const Vec3<R> xr = a + e * tr;
         const R angle = std::atan2(length(cross(rv, xr)), dot(rv, xr));
-        graded(tr, std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len);
+        centers[1] = tr;
+        widths[1] = std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len;
       }
     }
-    std::sort(cuts.begin(), cuts.begin() + nc);
-    for (int k = 0; k + 1 < nc && size < kExactMaxPieces; ++k)
-      if (cuts[k + 1] > cuts[k]) push(i, cuts[k], cuts[k + 1]);
+    quad.template add_graded<kExactMaxCuts>(edge[i], i, R(0), R(1), centers, widths, 2, w);
   }
 
   // 3. Global adaptivity: bisect the piece with the largest error estimate.
-  int splits = 0;
-  while (error > tolerance * std::abs(value) && size + 2 <= kExactMaxPieces) {
-    std::pop_heap(heap.begin(), heap.begin() + size, less_error<R>);
-    const Piece<R> p = heap[--size];
-    value -= p.value; error -= p.error;
-    const R mid = (p.t0 + p.t1) / 2;
-    if (!(mid > p.t0 && mid < p.t1)) {  // cannot be split further: keep it, stop
-      heap[size++] = p;
-      std::push_heap(heap.begin(), heap.begin() + size, less_error<R>);
-      value += p.value; error += p.error;
-      break;
-    }
-    push(p.edge, p.t0, mid);
-    push(p.edge, mid, p.t1);
-    // Running sums drift by rounding; recount them exactly now and then.
-    if (++splits % 64 == 0 || !std::isfinite(error)) {
-      value = 0; error = 0;
-      for (int k = 0; k < size; ++k) { value += heap[k].value; error += heap[k].error; }
-    }
-  }
-  value = 0;
-  for (int k = 0; k < size; ++k) value += heap[k].value;
+  const R value = quad.refine([&](int i, R t) { return edge[i](t); }, [&](int i) { return weight[i]; }, tolerance);
   if (tail) return std::max(view.orient * value, R(0));  // Is = orient Σ w_i ∫ c^{m+1} / |Rv x x|^2
   return std::max(-view.orient * value, R(0));
 }

@@ -12,6 +12,8 @@
 // increasing values of n"), applied to eq. 11-12. The paper gives no rule; ours:
 //   gamma(m) = min(pi/8, acos(2^(-1/m)))   (the lobe's half-maximum angle: cos^m gamma = 1/2),
 //   gamma(0) = pi/8,
+// gamma evaluated as atan2(sin, cos) from 1 - cos gamma = -expm1(-ln 2 / m): acos of a cosine
+// within ln 2 / m of 1 loses digits as m grows (~1e-12 relative at m = 1e4), the atan2 form none.
 // K = SpecularOptions::neighborhood_samples (K = 0 gives exactly the peak). Visibility samples
 // (not lobe values) are averaged so that a light covering the neighbourhood gives exactly the
 // peak; the lobe's shape is already in the peak. Documented in docs/area-lights.md.
@@ -30,7 +32,9 @@ template <class R>
 R neighborhood_half_angle(R m) {
   constexpr R kMaxSpread = R(M_PI / 8);
   if (!(m > R(0))) return kMaxSpread;
-  return std::min(kMaxSpread, std::acos(std::exp2(R(-1) / m)));
+  const R one_minus_cos = -std::expm1(R(-M_LN2) / m);  // 1 - 2^(-1/m)
+  const R sin_gamma = std::sqrt(one_minus_cos * (R(2) - one_minus_cos));
+  return std::min(kMaxSpread, std::atan2(sin_gamma, R(1) - one_minus_cos));
 }
 
 template <class R>

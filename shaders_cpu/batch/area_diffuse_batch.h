@@ -1,52 +1,36 @@
 // Area (panel) light, diffuse, float batch: Lambert's contour integral over the horizon-clipped
-// convex polygon, structure-of-arrays points.
+// convex polygon, for structure-of-arrays points.
 //
-// What it computes: Id = ∫_A max(0, cos theta) cos theta_l / r^2 dA = 1/2 Σ_i beta_i cos delta_i
-// over the polygon clipped to the upper hemisphere of P (Picott 1992 eq. 9; Lambert; Nishita and
-// Nakamae 1985), the same quantity as area_diffuse_contour.h, in the same vector form:
+// Computes Id = ∫_A max(0, cos theta) cos theta_l / r^2 dA = 1/2 Σ_i beta_i cos delta_i over the
+// polygon clipped to the upper hemisphere of P, in the vector form of area_diffuse_contour.h:
 //   beta_i cos delta_i = N.(a_{i+1} x a_i) beta_i / |a_i x a_{i+1}|,
 //   beta_i = atan2(|a_i x a_{i+1}|, a_i.a_{i+1}) (float_atan.h), a_i = Q_i - P = D + d_i,
-//   D = c - P formed in double, a_i x a_{i+1} = D x (d_{i+1} - d_i) + d_i x d_{i+1} (area_diffuse_contour.h).
+//   D = c - P formed in double, a_i x a_{i+1} = D x (d_{i+1} - d_i) + d_i x d_{i+1}.
+// Sources: Picott 1992 eq. 9; Lambert; Nishita and Nakamae 1985. Conventions: conventions.h.
+// Per-light constants: AreaBatchLight, filled by batch_kernel_for (src/shading/batch_kernels.cpp).
 //
-// Horizon clipping without a clip buffer: edge by edge, for all lanes at once (edge-major loops
-// over a block of lanes, so the compiler vectorises every loop). The part of edge i above the
-// tangent plane (N.a >= 0, the rule of clip_halfspace in area_polygon.h) is kept, its end below
-// the plane moved to the crossing point; where the boundary leaves the upper half space (exit)
-// and where it comes back (entry) are remembered, and the closing edge exit -> entry, which lies
-// in the tangent plane, is added after the last edge. For a convex polygon there is at most one
-// exit and one entry, so this equals Sutherland-Hodgman followed by the contour sum. Non-convex
-// lights stay on the scalar kernel (the scene plan checks convexity).
-// Per-light constants (batch_kernel_for in src/shading/batch_kernels.cpp): the centre c (double), the offsets d_i = Q_i - c,
-// the emitting normal, one- or two-sidedness, the vertex count (any N <= kAreaBatchMaxVertices, which
-// equals kMaxAreaVertices of area_polygon.h).
+// Horizon clip without a clip buffer, edge by edge over a block of lanes (edge-major, so every
+// loop over lanes vectorises; docs/performance.md): the part of edge i above the tangent plane
+// (N.a >= 0, clip_halfspace's rule in area_polygon.h) is kept, and where the boundary leaves and
+// re-enters the upper half space is remembered; the closing edge exit -> entry, in the tangent
+// plane, is added after the last edge. A convex polygon has at most one exit and one entry, so
+// this equals Sutherland-Hodgman followed by the contour sum; non-convex lights stay on the scalar
+// kernel (the scene plan checks convexity).
+// Small lights (radius < kAreaBatchSmallLightRatio |D|): the reference-subtracted sum of
+// area_diffuse_contour.h, beta/sin(beta) - 1 from its series; a block computes the plain form, the
+// small-light form or both, as its lanes need.
 //
-// Small lights: when the light's radius is below kAreaBatchSmallLightRatio |D| (every edge seen
-// under beta < 0.41), the terms are summed in the reference-subtracted form of
-// area_diffuse_contour.h (g_ref = 1/|D|^2 times twice the area vector, plus (g_i - g_ref) terms
-// that carry no cancellation), with beta/sin(beta) - 1 from its series; a block of lanes computes
-// the plain form, the small-light form or both (selected per lane) as its lanes need.
-//
-// Stiff lanes (computed again in double by this kernel; tests/kernels/batch/batch_kernels_test.cpp
-// "area batch: stiff cases", "area batch: lanes computed in double"): cancellation. Every term
-// carries an absolute rounding error of a few float epsilons times its magnitude bound (in the
-// plain form max(beta_i, g_i X_i), where X_i bounds the rounding of the split cross product, see
-// area_edge; |g_i - g_ref| |a_i x a_{i+1}| and g_ref |d_i x d_{i+1}| in the small-light form), so a
-// lane is stiff when the sum of the bounds exceeds kAreaBatchCancellation |Σ|: the light seen
-// grazing or cut by the horizon, where the result is small against its terms, or P near a vertex
-// of the light (the g X part: without it such lanes were up to 7e-5 off). The error of a float
-// lane grows about linearly with (bounds / |Σ|); 32 keeps it under the 1e-5 bar with some margin
-// on the test's sets and on the benchmark's floor (max printed by both: "area random",
-// bench/batch_kernels_bench). Also stiff: |D| > 1e8, where the small-light denominators would
-// overflow float.
-//
-// Double lanes: the stiff lanes of a block are gathered and run through the same edge-major
-// loops in double (atan2 from double_atan.h, 3.9e-16; the small-light form below
-// kSmallLightRatio |D| with the series of area_diffuse_contour.h; each cross product a_i x a_{i+1}
-// formed the way edge_cross of area_polygon.h chooses, by the smaller rounding bound). That is the
-// scalar double kernel's arithmetic, vectorised, so the kernel flags no lane for the caller
-// (BatchOutput::stiff stays 0 here; BatchOutput::in_double, when given, marks these lanes).
-// In the scalar double kernel a stiff lane cost ~300 ns, 60 % of the batch time on the
-// benchmark's floor; docs/performance.md has the measurements.
+// Stiff lanes: where the terms' rounding bounds (max(beta_i, g_i X_i), X_i bounding the split cross
+// product's rounding, see area_edge) sum to more than kAreaBatchCancellation |Σ| (grazing light,
+// the horizon cutting the light, P near a vertex of the light), or |D| > 1e8 (float overflow of
+// the small-light denominators), the lane runs again in this kernel's double lanes: the same loops
+// in double with the scalar double kernel's arithmetic (double_atan.h, its small-light series,
+// edge_cross's choice of cross product). BatchOutput::stiff stays 0; BatchOutput::in_double marks
+// those lanes. How the bar 32 was chosen and what the double lanes cost: docs/performance.md,
+// "Precision".
+// Tests: tests/kernels/batch/batch_kernels_test.cpp "area batch: stiff cases", "area batch: lanes
+// computed in double". Accuracy: float lanes within 1e-5 of the double kernel,
+// `./build/release/tests/batch_kernel_tests -s` (table in docs/performance.md).
 #pragma once
 
 #include <cmath>

@@ -137,7 +137,11 @@ int run_render(const RenderArgs& args) {
     std::vector<Vec3d>().swap(prim.normals);
   }
   t = Clock::now();
-  const raster::Image image = raster::render(meshes, camera, options);
+  raster::RenderWorkspace workspace;
+  raster::Image image;
+  raster::render(meshes, camera, options, workspace, image);
+  if (const std::size_t bad = workspace.bad_index_triangles())
+    print_warning(args.input + ": " + std::to_string(bad) + " triangles skipped: an index beyond the mesh's vertices");
   const double raster_seconds = since(t);
   t = Clock::now();
   const std::vector<uint8_t> rgb8 =

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/input_error.h"
+#include "core/robust_math.h"
 #include "plan/shadow_plan.h"
 
 namespace vlit {
@@ -57,7 +58,7 @@ std::string cannot_reach(const LightSource& l, std::size_t p, const Bounds& b) {
     const Vec3d to_center = b.center() - l.position;
     const double dist = length(to_center);
     if (dist > b.radius()) {
-      const double angle_to_center = std::acos(std::clamp(dot(to_center / dist, l.direction), -1.0, 1.0));
+      const double angle_to_center = angle_between(to_center, l.direction);
       const double angular_radius = std::asin(std::min(1.0, b.radius() / dist));
       if (angle_to_center - angular_radius > std::acos(std::clamp(l.cos_outer, -1.0, 1.0))) return "outside the spot cone";
     }

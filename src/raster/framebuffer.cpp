@@ -31,8 +31,11 @@ void SampleBand::reset(int width, int row_begin, int row_end, const Vec3f& backg
     std::memcpy(color_ + 3 * size_t(row) * size_t(width), color_, 3 * sizeof(float) * size_t(width));
 }
 
-void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int col_end) {
-  // Attribute values at the first sample centre of the span, then one step per sample.
+// The span loop of both shade_span variants: attribute values at the first sample centre of the
+// span, then one step per sample; where the depth test passes, the sample gets
+// color_of(col, Gouraud colour).
+template <class ColorOf>
+void SampleBand::step_span(const SetupTriangle& t, int row, int col_begin, int col_end, const ColorOf& color_of) {
   const double dx = col_begin + 0.5 - t.ref_x(), dy = row + 0.5 - t.ref_y();
   const auto start = [&](const Gradient& g) { return g.at_ref + g.ddx * dx + g.ddy * dy; };
   double depth = start(t.depth), inv_w = start(t.inv_w);
@@ -43,7 +46,7 @@ void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int 
     if (z > depth_[offset + col]) {
       depth_[offset + col] = z;
       const double w = 1.0 / inv_w;
-      store_color(offset + col, Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)});
+      store_color(offset + col, color_of(col, Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)}));
     }
     depth += t.depth.ddx;
     inv_w += t.inv_w.ddx;
@@ -51,6 +54,10 @@ void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int 
     g_w += t.color_over_w[1].ddx;
     b_w += t.color_over_w[2].ddx;
   }
+}
+
+void SampleBand::shade_span(const SetupTriangle& t, int row, int col_begin, int col_end) {
+  step_span(t, row, col_begin, col_end, [](int, const Vec3f& gouraud) { return gouraud; });
 }
 
 void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_begin, int col_end,
@@ -75,27 +82,12 @@ void SampleBand::shade_span_wireframe(const SetupTriangle& t, int row, int col_b
   if (t.original_edges & kEdgeTopBottom) add(0, 2);
 
   // The same stepping as shade_span (bit-identical colours off the wire).
-  const double dx = col_begin + 0.5 - t.ref_x(), dy = row + 0.5 - t.ref_y();
-  const auto start = [&](const Gradient& g) { return g.at_ref + g.ddx * dx + g.ddy * dy; };
-  double depth = start(t.depth), inv_w = start(t.inv_w);
-  double r_w = start(t.color_over_w[0]), g_w = start(t.color_over_w[1]), b_w = start(t.color_over_w[2]);
-  const size_t offset = size_t(row - row_begin_) * size_t(width_);
-  for (int col = col_begin; col < col_end; ++col) {
-    const float z = float(depth);
-    if (z > depth_[offset + col]) {
-      depth_[offset + col] = z;
-      bool on_wire = false;
-      for (int e = 0; e < edge_count; ++e)
-        on_wire = on_wire || std::abs(edges[e].at_begin + edges[e].step * (col - col_begin)) < wire_width;
-      const double w = 1.0 / inv_w;
-      store_color(offset + col, on_wire ? wire_color : Vec3f{float(r_w * w), float(g_w * w), float(b_w * w)});
-    }
-    depth += t.depth.ddx;
-    inv_w += t.inv_w.ddx;
-    r_w += t.color_over_w[0].ddx;
-    g_w += t.color_over_w[1].ddx;
-    b_w += t.color_over_w[2].ddx;
-  }
+  step_span(t, row, col_begin, col_end, [&](int col, const Vec3f& gouraud) {
+    bool on_wire = false;
+    for (int e = 0; e < edge_count; ++e)
+      on_wire = on_wire || std::abs(edges[e].at_begin + edges[e].step * (col - col_begin)) < wire_width;
+    return on_wire ? wire_color : gouraud;
+  });
 }
 
 void SampleBand::resolve(int samples_per_side, Image& image) {

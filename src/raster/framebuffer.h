@@ -39,6 +39,9 @@ class SampleBand {
   int row_end() const { return row_end_; }
 
  private:
+  template <class ColorOf>
+  void step_span(const SetupTriangle& t, int row, int col_begin, int col_end, const ColorOf& color_of);
+
   int width_ = 0, row_begin_ = 0, row_end_ = 0;
   std::vector<float> depth_;  // reversed depth (greater is nearer), cleared to -1 (below any surface)
   void store_color(size_t sample, const Vec3f& c) {

@@ -31,7 +31,10 @@ void setup_one(const DrawMesh& mesh, const Mat4d& clip_from_world, const std::ve
                uint32_t i0, uint32_t i1, uint32_t i2, const ClipPlanes& planes, const GeometryOptions& options, bool cull,
                uint32_t chunk_index, SetupChunk& chunk) {
   const size_t n = mesh.positions.size();
-  if (i0 >= n || i1 >= n || i2 >= n) return;
+  if (i0 >= n || i1 >= n || i2 >= n) {
+    ++chunk.bad_index_triangles;
+    return;
+  }
   if (base + n > size_t(UINT32_MAX)) return;  // beyond 2^32 vertices in one frame (docs/rasterizer.md, limits)
   const uint8_t f0 = flags[base + i0], f1 = flags[base + i1], f2 = flags[base + i2];
   const uint8_t any = f0 | f1 | f2;
@@ -80,6 +83,12 @@ const SetupTriangle* SetupBuffers::triangle(const DrawEntry& e, int grid_width, 
   if (!t) return nullptr;
   *scratch = *t;
   return scratch;
+}
+
+size_t SetupBuffers::bad_index_triangles() const {
+  size_t n = 0;
+  for (size_t c = 0; c < chunk_count; ++c) n += chunks[c].bad_index_triangles;
+  return n;
 }
 
 void SetupBuffers::rows(const DrawEntry& e, int grid_height, int* row_begin, int* row_end) const {
@@ -138,6 +147,7 @@ void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_wo
       SetupChunk& out = buffers.chunks[chunk_index];
       out.entries.clear();
       out.clipped.clear();
+      out.bad_index_triangles = 0;
       const size_t end = std::min(triangle_count, size_t(chunk + 1) * kTriangleChunk);
       out.entries.reserve(end - size_t(chunk) * kTriangleChunk);
       for (size_t t = size_t(chunk) * kTriangleChunk; t < end; ++t)

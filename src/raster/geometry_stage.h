@@ -34,6 +34,7 @@ struct DrawEntry {
 struct SetupChunk {
   std::vector<DrawEntry> entries;         // draw order
   std::vector<SetupTriangle> clipped;     // set-up pieces of clipped triangles
+  size_t bad_index_triangles = 0;         // skipped: an index beyond the mesh's vertices
 };
 
 // The triangles of a frame, in draw order: chunks[0], chunks[1], ... up to chunk_count, each the
@@ -54,10 +55,13 @@ struct SetupBuffers {
   // Sample rows [*row_begin, *row_end) the entry may cover (exactly setup_triangle's, so empty
   // when setup would drop it for its rows).
   void rows(const DrawEntry& e, int grid_height, int* row_begin, int* row_end) const;
+  // Triangles of this frame skipped because an index is beyond their mesh's vertices.
+  size_t bad_index_triangles() const;
 };
 
 // Triangles with a non-finite vertex (NaN/Inf position or colour, or a projection that overflows)
-// or an out-of-range index are skipped, as are zero-area ones (triangle_setup.h).
+// or an out-of-range index are skipped, as are zero-area ones (triangle_setup.h); the ones with an
+// out-of-range index are counted (SetupBuffers::bad_index_triangles) so that the caller can say so.
 void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_world, const GeometryOptions& options,
                   SetupBuffers& buffers);
 

@@ -52,6 +52,7 @@ RenderWorkspace::RenderWorkspace() : buffers(std::make_unique<Buffers>()) {}
 RenderWorkspace::~RenderWorkspace() = default;
 RenderWorkspace::RenderWorkspace(RenderWorkspace&&) noexcept = default;
 RenderWorkspace& RenderWorkspace::operator=(RenderWorkspace&&) noexcept = default;
+size_t RenderWorkspace::bad_index_triangles() const { return buffers ? buffers->setup.bad_index_triangles() : 0; }
 
 Image render(const std::vector<DrawMesh>& meshes, const Camera& camera, const RenderOptions& options) {
   RenderWorkspace workspace;
@@ -64,6 +65,7 @@ void render(const std::vector<DrawMesh>& meshes, const Camera& camera, const Ren
             RenderWorkspace& workspace, Image& image) {
   if (!validate_render_options(options).empty()) {
     image = Image{};
+    if (workspace.buffers) workspace.buffers->setup.chunk_count = 0;  // no triangle of this frame
     return;
   }
   if (!workspace.buffers) workspace.buffers = std::make_unique<RenderWorkspace::Buffers>();
@@ -79,6 +81,7 @@ void render(const std::vector<DrawMesh>& meshes, const Camera& camera, const Ren
       image.rgb[i + 1] = options.background.y;
       image.rgb[i + 2] = options.background.z;
     }
+    buffers.setup.chunk_count = 0;  // no triangle of this frame
     return;
   }
 

@@ -63,6 +63,9 @@ class RenderWorkspace {
   RenderWorkspace& operator=(RenderWorkspace&&) noexcept;
   struct Buffers;  // render.cpp
   std::unique_ptr<Buffers> buffers;
+  // Triangles that the last render() with this workspace skipped because an index was beyond
+  // their mesh's vertices (0 before the first frame, and for a frame refused or not projected).
+  size_t bad_index_triangles() const;
 };
 
 // Renders into `image` (resized as needed, storage reused), with the workspace's buffers.

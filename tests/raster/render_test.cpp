@@ -206,10 +206,15 @@ TEST_CASE("render: degenerate triangles are skipped without crashing") {
   options.width = 40;
   options.height = 30;
   options.samples = 4;
-  const Image image = render({mesh}, cam, options);
+  RenderWorkspace workspace;
+  Image image;
+  render({mesh}, cam, options, workspace, image);
   REQUIRE(image.rgb.size() == size_t(40 * 30 * 3));
   for (float v : image.rgb) REQUIRE(std::isfinite(v));
   CHECK(pixel(image, 20, 15)[1] == 1.0f);  // the valid quad still renders
+  CHECK(workspace.bad_index_triangles() == 1);  // 0, 1, 999 is counted, not silently dropped
+  render({quad(0, 1, {0, 1, 0})}, cam, options, workspace, image);
+  CHECK(workspace.bad_index_triangles() == 0);  // per frame
   // Empty meshes and empty scene.
   CHECK(render({DrawMesh{}}, cam, options).rgb.size() == size_t(40 * 30 * 3));
   CHECK(render({}, cam, options).rgb.size() == size_t(40 * 30 * 3));

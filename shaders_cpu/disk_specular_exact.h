@@ -6,7 +6,7 @@
 // Method: as area_specular_exact.h (polar coordinates about Rv, radial integral closed):
 //   Is = -1/(m + 1) ∮ (1 - c^{m+1}) dphi,  dphi = Rv.(x x dx) / |Rv x x|^2,  c = Rv.x / |x|,
 // (or +1/(m + 1) ∮ c^{m+1} dphi when Rv misses the visible part: the winding number is 0),
-// over the boundary of disk ∩ {N.(x - P) >= 0} ∩ {Rv.(x - P) >= 0} (the last for m > 0),
+// over the boundary of disk ∩ {N.(x - P) >= 0} ∩ {Rv.(x - P) >= 0} (also for m = 0: its limit m -> 0+),
 // traversed counter-clockwise about the disk's normal n (toward P). In the disk's plane
 // (coordinates p relative to the centre, axes u, v with u x v = n) each half-space is
 // alpha.p + beta >= 0; the boundary is made of
@@ -44,7 +44,7 @@ R disk_specular_exact(const AreaView<R>& view, R radius, const Vec3<R>& n, const
   int nl = 0;
   auto add_line = [&](const Vec3<R>& k) { lines[nl++] = {dot(k, view.u), dot(k, view.v), dot(k, view.D)}; };
   add_line(n);
-  if (m != R(0)) add_line(rv);
+  add_line(rv);  // the lobe's half-space, also for m = 0 (its limit m -> 0+ is [Rv.w > 0])
   auto inside = [&](R px, R py, int skip) {
     for (int k = 0; k < nl; ++k)
       if (k != skip && lines[k].ax * px + lines[k].ay * py + lines[k].beta < R(0)) return false;

@@ -10,6 +10,7 @@
 // - specular methods against the exact lobe integral at tolerance 1e-12. For the peak and the
 //   neighbourhood this is the error of the paper's approximation itself (eq. 7-8), not a bug.
 // Errors are relative to max(|baseline|, 1e-12 * max baseline over the set).
+// The run_engine lines compare the exact specular's closed form (integer m) with its adaptive form.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -117,8 +118,50 @@ SpecularOptions spec(SpecularMethod m, int k = 4, double tol = 1e-9) {
 void run_d(benchmark::State& s, Kind k, double n, SpecularOptions sp, LinearDiffuseOptions d) { run<double>(s, k, n, sp, d); }
 void run_f(benchmark::State& s, Kind k, double n, SpecularOptions sp, LinearDiffuseOptions d) { run<float>(s, k, n, sp, d); }
 
+// The exact specular's two engines on the same cases with integer m log-uniform in [m_lo, m_hi]
+// (the random set above otherwise): the closed form where its bound holds, else adaptive
+// (linear_specular_exact_dispatch, what `--specular exact` runs), and the adaptive form alone
+// (linear_specular_exact_frame, tolerance 1e-9). Both on the frame set up in long double, timed
+// with it. Errors against the adaptive form at tolerance 1e-12; closed_fraction = the share of
+// cases the closed form answers. The closed_forced lines time the recurrence alone on every case,
+// accepted or not (their errors include the refused cases: they show why the bound is needed).
+enum class Engine { kDispatch, kAdaptive, kClosedForced };
+
+void run_engine(benchmark::State& state, Engine engine, double m_lo, double m_hi) {
+  std::vector<Case> cases = make_cases(2.0);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u01(0, 1);
+  for (Case& c : cases)
+    c.sp.shininess = std::round(std::pow(10.0, std::log10(m_lo) + (std::log10(m_hi) - std::log10(m_lo)) * u01(rng)));
+  auto eval = [engine](const Case& c) {
+    const LinearFrame<double> fr = make_linear_frame_precise(c.light, c.sp);
+    if (engine == Engine::kClosedForced) return linear_specular_closed_frame(fr, int(c.sp.shininess)).value;
+    return engine == Engine::kDispatch ? linear_specular_exact_dispatch(fr, c.sp.shininess, 1e-9)
+                                       : linear_specular_exact_frame(fr, c.sp.shininess, 1e-9);
+  };
+  for (auto _ : state)
+    for (const Case& c : cases) benchmark::DoNotOptimize(eval(c));
+  state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(cases.size()));
+  std::vector<double> value, base;
+  int closed = 0;
+  for (const Case& c : cases) {
+    const LinearFrame<double> fr = make_linear_frame_precise(c.light, c.sp);
+    value.push_back(eval(c));
+    base.push_back(linear_specular_exact_frame(fr, c.sp.shininess, 1e-12));
+    if (linear_specular_closed_frame(fr, int(c.sp.shininess)).accepted) ++closed;
+  }
+  report_errors(state, value, base);
+  state.counters["closed_fraction"] = engine == Engine::kAdaptive ? 0.0 : double(closed) / double(cases.size());
+}
+
 }  // namespace
 
+BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_1_100_closed_or_adaptive, Engine::kDispatch, 1.0, 100.0);
+BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_1_100_adaptive_only, Engine::kAdaptive, 1.0, 100.0);
+BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_1_100_closed_forced, Engine::kClosedForced, 1.0, 100.0);
+BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_100_1e4_closed_forced, Engine::kClosedForced, 100.0, 1e4);
+BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_100_1e4_closed_or_adaptive, Engine::kDispatch, 100.0, 1e4);
+BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_100_1e4_adaptive_only, Engine::kAdaptive, 100.0, 1e4);
 BENCHMARK_CAPTURE(run_d, diffuse_closed_n2_double, Kind::kDiffuse, 2.0, kNoSpec, kClosed);
 BENCHMARK_CAPTURE(run_f, diffuse_closed_n2_float, Kind::kDiffuse, 2.0, kNoSpec, kClosed);
 BENCHMARK_CAPTURE(run_d, diffuse_closed_n1_double, Kind::kDiffuse, 1.0, kNoSpec, kClosed);

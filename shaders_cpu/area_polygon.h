@@ -226,10 +226,11 @@ Vec3<R> edge_cross(const Vec3<R>& D, const Vec3<R>& di, const Vec3<R>& dj) {
 
 // max(0, cos alpha)^m from the angle alpha in [0, pi], accurate for alpha -> 0 and large m:
 // cos alpha = 1 - 2 sin^2(alpha/2), so log(cos alpha) = log1p(-2 sin^2(alpha/2)).
+// m = 0 is the limit m -> 0+: 1 for alpha < pi/2, 0 beyond (phong_power in core/robust_math.h).
 template <class R>
 R phong_lobe_from_angle(R alpha, R m) {
-  if (m == R(0)) return R(1);
   if (!(alpha < R(M_PI / 2))) return R(0);
+  if (m == R(0)) return R(1);
   const R s = std::sin(alpha / R(2));
   return std::exp(m * std::log1p(R(-2) * s * s));
 }

@@ -10,8 +10,9 @@
 // contour integral) with polar coordinates about Rv instead of Stokes' theorem.
 //
 // Method (docs/area-lights.md "Exact specular"):
-//  1. clip the light to the horizon N.(x - P) >= 0 and, for m > 0, to the lobe's half-space
-//     Rv.(x - P) >= 0, so that c = Rv.w >= 0 on the visible set;
+//  1. clip the light to the horizon N.(x - P) >= 0 and to the lobe's half-space Rv.(x - P) >= 0,
+//     so that c = Rv.w >= 0 on the visible set (also for m = 0, whose lobe is the limit m -> 0+,
+//     [Rv.w > 0]: continuous in m; "m -> 0 continuity" in tests/kernels/area/area_specular_test.cpp);
 //  2. polar coordinates (Theta, phi) about the axis Rv: dw = sin Theta dTheta dphi and the radial
 //     integral is closed: ∫_0^Theta cos^m t sin t dt = (1 - cos^{m+1} Theta) / (m + 1). Fanning the
 //     spherical polygon from Rv (signed: valid whether Rv is inside or not),
@@ -69,8 +70,8 @@ R lobe_per_azimuth(const Vec3<R>& x, const Vec3<R>& rv, R m, bool tail = false) 
     if (!(rx > R(0))) return R(0);  // the tail form runs for m > 0 only: max(0, c)^{m+1} = 0
     return std::exp((m + R(1)) * std::log(rx / r)) / perp2;
   }
-  if (!(rx > R(0))) {  // only for m = 0 (no lobe clip): 1 - c, c <= 0
-    return perp2 > R(0) ? (R(1) - rx / r) / perp2 : R(0);
+  if (!(rx > R(0))) {  // c <= 0 (on the lobe clip's boundary, or past it by rounding): lobe 0
+    return perp2 > R(0) ? R(1) / perp2 : R(0);
   }
   const R base = r * (r + rx);  // perp2 = (1 - c) * base
   const R one_minus_c = std::min(perp2 / base, R(1));
@@ -101,13 +102,11 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   using namespace area_exact_detail;
   if (!view.lit || horizon_clipped.count < 3) return R(0);
   const Vec3<R> rv = normalize(rv_in);
-  // 1. Lobe clip (not for m = 0, where max(0, c)^0 = 1 everywhere: the solid angle).
+  // 1. Lobe clip, also for m = 0: the lobe there is the limit m -> 0+, [Rv.w > 0] (the solid
+  // angle of the part of the light in front of the lobe's half-space; core/robust_math.h).
   ClipPolygon<R> lobe_clipped;
-  const ClipPolygon<R>* poly = &horizon_clipped;
-  if (shininess != R(0)) {
-    clip_halfspace(horizon_clipped.d.data(), horizon_clipped.count, rv, dot(rv, view.D), lobe_clipped);
-    poly = &lobe_clipped;
-  }
+  clip_halfspace(horizon_clipped.d.data(), horizon_clipped.count, rv, dot(rv, view.D), lobe_clipped);
+  const ClipPolygon<R>* poly = &lobe_clipped;
   const int n = poly->count;
   if (n < 3) return R(0);
   const R lobe_width = R(1) / std::sqrt(shininess + R(1));  // ~ angular width of cos^m

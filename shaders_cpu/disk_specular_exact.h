@@ -6,7 +6,7 @@
 // Method: as area_specular_exact.h (polar coordinates about Rv, radial integral closed):
 //   Is = -1/(m + 1) ∮ (1 - c^{m+1}) dphi,  dphi = Rv.(x x dx) / |Rv x x|^2,  c = Rv.x / |x|,
 // (or +1/(m + 1) ∮ c^{m+1} dphi when Rv misses the visible part: the winding number is 0),
-// over the boundary of disk ∩ {N.(x - P) >= 0} ∩ {Rv.(x - P) >= 0} (the last for m > 0),
+// over the boundary of disk ∩ {N.(x - P) >= 0} ∩ {Rv.(x - P) >= 0} (also for m = 0: its limit m -> 0+),
 // traversed counter-clockwise about the disk's normal n (toward P). In the disk's plane
 // (coordinates p relative to the centre, axes u, v with u x v = n) each half-space is
 // alpha.p + beta >= 0; the boundary is made of
@@ -37,8 +37,8 @@ inline constexpr int kDiskExactMaxCuts = 64;  // initial cut points per arc or c
 
 namespace disk_exact_detail {
 
-// The visible part of the disk in its plane: the half-spaces alpha.p + beta >= 0 (the horizon,
-// and for m > 0 the lobe) and where their lines cross the rim.
+// The visible part of the disk in its plane: the half-spaces alpha.p + beta >= 0 (the horizon
+// and the lobe, also for m = 0) and where their lines cross the rim.
 template <class R>
 struct DiskClip {
   struct Line { R ax, ay, beta; };
@@ -62,7 +62,7 @@ DiskClip<R> clip_disk(const AreaView<R>& view, R radius, const Vec3<R>& n, const
   DiskClip<R> clip;
   auto add_line = [&](const Vec3<R>& k) { clip.lines[clip.nl++] = {dot(k, view.u), dot(k, view.v), dot(k, view.D)}; };
   add_line(n);
-  if (m != R(0)) add_line(rv);
+  add_line(rv);  // the lobe's half-space, also for m = 0 (its limit m -> 0+ is [Rv.w > 0])
   for (int k = 0; k < clip.nl; ++k) {
     const auto& line = clip.lines[k];
     const R mu = std::hypot(line.ax, line.ay);

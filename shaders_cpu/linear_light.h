@@ -7,7 +7,8 @@
 // Dispatch: integer falloff n in {0,1,2,3} uses the closed forms (linear_diffuse_closed.h) unless
 // LinearDiffuseOptions::force_quadrature; any other n in [0, 3] uses linear_diffuse_quadrature.h.
 // Specular: kNone -> 0, kPeak -> linear_specular_peak.h, kNeighborhood ->
-// linear_specular_neighborhood.h, kExact -> linear_specular_exact.h. The frame
+// linear_specular_neighborhood.h, kExact -> linear_specular_closed.h for integer m where its
+// rounding bound holds, else linear_specular_exact.h (linear_specular_exact_dispatch). The frame
 // (linear_geometry.h) is built once per call and shared.
 //
 // Per-light constants: only Ld = Q1 - Q0, |Ld| and u = Ld/|Ld| (docs/linear-lights.md, E1);
@@ -18,15 +19,29 @@
 // T when the true value overflows T).
 #pragma once
 
+#include <cmath>
+
 #include "conventions.h"
 #include "linear_diffuse_closed.h"
 #include "linear_diffuse_quadrature.h"
 #include "linear_geometry.h"
+#include "linear_specular_closed.h"
 #include "linear_specular_exact.h"
 #include "linear_specular_neighborhood.h"
 #include "linear_specular_peak.h"
 
 namespace vlit {
+
+// The exact specular: the closed form for integer m where its rounding bound holds
+// (linear_specular_closed.h), the adaptive form otherwise and for real m (linear_specular_exact.h).
+template <class A>
+A linear_specular_exact_dispatch(const LinearFrame<A>& fr, A m, A rel_tol) {
+  if (m == std::floor(m) && m >= A(0) && m <= A(kLinearClosedMaxShininess)) {
+    const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m));
+    if (c.accepted) return c.value;
+  }
+  return linear_specular_exact_frame(fr, m, rel_tol);
+}
 
 struct LinearDiffuseOptions {
   double quadrature_tolerance = 1e-10;  // relative tolerance of the non-integer-n quadrature
@@ -55,7 +70,9 @@ Response<T> shade_linear(const LinearLight<T>& light, const ShadingPoint<T>& sp,
       r.specular = T(linear_specular_neighborhood_frame(fr, m, spec.neighborhood_samples));
       break;
     case SpecularMethod::kExact:
-      r.specular = T(linear_specular_exact_frame(fr, m, A(spec.exact_tolerance)));
+      // Its own frame, set up in long double: the lobe's height is m times more sensitive to the
+      // frame's rounding than the diffuse (make_linear_frame_precise).
+      r.specular = T(linear_specular_exact_dispatch(make_linear_frame_precise(light, sp), m, A(spec.exact_tolerance)));
       break;
   }
   return r;

@@ -11,6 +11,9 @@
 // ratio 2 from width h, at the peak s_peak (linear_specular_peak.h) with a grading from the lobe
 // width w = (h^2 + s_peak^2) / (h sqrt(m)) (the s-length over which α changes by 1/sqrt(m)) down
 // to w/2^6 and up, and at the zero of Rv.L (s = -ar/br), where max(0, .)^m has a kink.
+// Role: `--specular exact` uses linear_specular_closed.h for integer m where its rounding bound
+// holds and this form elsewhere (linear_specular_exact_dispatch in linear_light.h); both on the
+// frame set up in long double (make_linear_frame_precise).
 // Departures from the paper: it is not in the paper; horizon clipping.
 // Stiff cases: zero-length (point value, exact), P on the segment (L̂ = ±u on the visible part),
 // large m (lobe panels); tests/kernels/linear/linear_stiff_test.cpp.
@@ -69,7 +72,7 @@ A linear_specular_exact_frame(const LinearFrame<A>& fr, A m, A rel_tol) {
 template <class T>
 T linear_specular_exact(const LinearLight<T>& light, const ShadingPoint<T>& sp, double rel_tol) {
   using A = LinearCompute<T>;
-  return T(linear_specular_exact_frame(make_linear_frame(light, sp), A(sp.shininess), A(rel_tol)));
+  return T(linear_specular_exact_frame(make_linear_frame_precise(light, sp), A(sp.shininess), A(rel_tol)));
 }
 
 }  // namespace vlit

@@ -32,10 +32,12 @@ T angle_between(const Vec3<T>& a, const Vec3<T>& b) {
 template <class T>
 T clamp01(T x) { return std::clamp(x, T(0), T(1)); }
 
-// x^m for m >= 0 with 0^0 taken as 1 and negative bases clamped to 0 (the Phong lobe max(0,c)^m).
+// The Phong lobe max(0, c)^m for m >= 0, with m = 0 taken as its limit m -> 0+: [c > 0] (1 in
+// front of the lobe's half-space, 0 on and behind it), so that the lobe is continuous in m
+// (docs/conventions.md "Radiometric definitions").
 template <class T>
 T phong_power(T cos_alpha, T m) {
-  if (cos_alpha <= T(0)) return m == T(0) ? T(1) : T(0);
+  if (!(cos_alpha > T(0))) return T(0);
   return std::pow(cos_alpha, m);
 }
 

@@ -85,7 +85,8 @@ inline LD reference_integral(const RefQuery& q) {
     for (const auto& v : piece) poly.push_back({dot(e1, v - o), dot(e2, v - o)});
     // Horizon and lobe half-planes in plane coordinates: K.(o + x e1 + y e2 - P) >= 0.
     poly = clip_convex_2d(poly, dot(N, e1), dot(N, e2), dot(N, o - P));
-    if (q.specular && m != 0 && poly.size() >= 3) poly = clip_convex_2d(poly, dot(Rv, e1), dot(Rv, e2), dot(Rv, o - P));
+    // The lobe's half-space, also for m = 0, whose lobe is the limit m -> 0+, [Rv.w > 0].
+    if (q.specular && poly.size() >= 3) poly = clip_convex_2d(poly, dot(Rv, e1), dot(Rv, e2), dot(Rv, o - P));
     if (poly.size() < 3) continue;
     // Foot of P and the hit point of the ray P + t Rv.
     const RefPoint2 foot{dot(e1, P - o), dot(e2, P - o)};
@@ -155,7 +156,7 @@ inline LD reference_integral(const RefQuery& q) {
           const LD cos_l = height / r;
           if (!q.specular) return (dot(N, a) / r) * cos_l / r2;
           const LD c = dot(Rv, a) / r;
-          return (m == 0 ? 1 : (c > 0 ? std::pow(c, m) : 0)) * cos_l / r2;
+          return (c > 0 ? std::pow(c, m) : 0) * cos_l / r2;
         };
         for (size_t i = 1; i + 1 < poly.size(); ++i) {
           const LD e1x = poly[i].x - poly[0].x, e1y = poly[i].y - poly[0].y;
@@ -181,7 +182,7 @@ inline LD reference_integral(const RefQuery& q) {
       const LD cos_l = height / r;
       if (!q.specular) return (dot(N, a) / r) * cos_l / r2;
       const LD c = dot(Rv, a) / r;
-      const LD lobe = m == 0 ? 1 : (c > 0 ? std::pow(c, m) : 0);
+      const LD lobe = c > 0 ? std::pow(c, m) : 0;
       return lobe * cos_l / r2;
     };
     const LD hit_phi = has_hit ? std::atan2(splits[0].y - center.y, splits[0].x - center.x) : 0;

@@ -319,3 +319,41 @@ TEST_CASE("area specular exact: stiff cases") {
     CHECK(std::abs(k - ref) <= kExactBar * ref);
   }
 }
+
+// m -> 0 continuity: the lobe at m = 0 is the limit m -> 0+, [Rv.w > 0] (core/robust_math.h), so the
+// exact specular at m = 0 is the solid angle of the part of the light in front of the lobe's
+// half-space, and m = 1e-12 gives the same to ~1e-11. Against the area quadrature (which clips to
+// the half-space Rv.(x - P) >= 0 itself) in front of, behind and straddling that half-space.
+TEST_CASE("area specular exact: m -> 0 continuity at m = 0, 1e-12, 1, 1e4") {
+  const Vec3d up{0, 0, 1};
+  struct Case { const char* where; std::vector<Vec3d> poly; Vec3d rv; };
+  const std::vector<Case> cases{
+      {"front", square_down(1, 1), normalize(Vec3d{0.2, 0.1, 1})},           // Rv.w > 0 on all of it
+      {"behind", square_down(1, 1, -3, 0), normalize(Vec3d{1, 0, 0.05})},     // Rv.w < 0 on all of it
+      {"straddling", square_down(1, 1), normalize(Vec3d{1, 0, 0.2})}};        // Rv.w = 0 at x = -0.2
+  for (const Case& c : cases) {
+    for (double m : {0.0, 1e-12, 1.0, 1e4}) {
+      const ShadingPoint<double> sp{{0, 0, 0}, up, c.rv, m};
+      const double k = shade_area(light_of(c.poly), sp, spec_options(SpecularMethod::kExact, 1e-11)).specular;
+      const double ref = reference_specular({c.poly}, sp, false, 1e-13L);
+      const ErrorMeasure e = measure(k, ref, contour_scale(c.poly, sp.p));
+      INFO(std::string(c.where), " m=", m, ": kernel=", k, " reference=", ref, " rel.err=", e.rel);
+      CHECK(std::isfinite(k));
+      if (ref == 0) CHECK(k == 0); else CHECK(e.rel <= 1e-9);
+      MESSAGE("area exact specular m->0 '", std::string(c.where), "' m=", m, ": kernel=", k, " reference=", ref, " rel.err=", e.rel);
+    }
+  }
+  // The front case at m = 0 is the solid angle of the whole 2x2 square at distance 1: 2 pi / 3.
+  const double front0 = shade_area(light_of(cases[0].poly), {{0, 0, 0}, up, cases[0].rv, 0},
+                                   spec_options(SpecularMethod::kExact, 1e-11)).specular;
+  CHECK(front0 == doctest::Approx(4 * std::asin(0.5)).epsilon(1e-10));
+  // Straddling: m = 0 and m = 1e-12 agree; behind: 0 at m = 0 (formerly the whole solid angle).
+  const auto at = [&](const Case& c, double m) {
+    return shade_area(light_of(c.poly), {{0, 0, 0}, up, c.rv, m}, spec_options(SpecularMethod::kExact, 1e-11)).specular;
+  };
+  CHECK(std::abs(at(cases[2], 0) - at(cases[2], 1e-12)) <= 1e-10 * at(cases[2], 0));
+  CHECK(at(cases[1], 0) == 0);
+  // The peak at m = 0: 1 if any of the light is in front of the half-space, else 0.
+  CHECK(shade_area(light_of(cases[1].poly), {{0, 0, 0}, up, cases[1].rv, 0}, spec_options(SpecularMethod::kPeak)).specular == 0);
+  CHECK(shade_area(light_of(cases[2].poly), {{0, 0, 0}, up, cases[2].rv, 0}, spec_options(SpecularMethod::kPeak)).specular == 1);
+}

@@ -73,7 +73,6 @@ inline long double disk_reference(const DiskQuery& q) {
     if (!(cos_n > 0)) return 0;
     const LD cos_l = h / r;
     if (!q.specular) return cos_n * cos_l / r2;
-    if (m == 0) return cos_l / r2;
     const LD cr = dot(rv, a) / r;
     return cr > 0 ? std::pow(std::min(cr, LD(1)), m) * cos_l / r2 : 0;
   };

@@ -178,8 +178,9 @@ inline LD ref_peak_t(const RefGeom& g) {
   return t_best;
 }
 
+// max(0, c)^m; m = 0 is the limit m -> 0+, [c > 0].
 inline LD ref_phong(LD c, LD m) {
-  if (c <= 0) return m == 0 ? 1 : 0;
+  if (!(c > 0)) return 0;
   return std::pow(c, m);
 }
 

@@ -27,5 +27,7 @@ std::vector<std::uint32_t> draw_order_of(const tinygltf::Model& model, const tin
 
 // Number of components of a glTF accessor type (TINYGLTF_TYPE_*), or 0 if unknown.
 int accessor_components(int type);
+// Bytes of one component of a glTF 2.0 componentType (5120-5123, 5125, 5126); 0 for any other.
+int component_bytes(int component_type);
 
 }  // namespace vlit

@@ -8,21 +8,10 @@
 #include <tiny_gltf.h>
 
 #include "core/input_error.h"
+#include "gltf/accessor_reader.h"
 
 namespace vlit {
 namespace {
-
-std::size_t component_size(int component_type) {
-  switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0;
-  }
-}
 
 // The glTF component type that stores a Draco data type unchanged, or 0.
 int gltf_component_type(draco::DataType type) {
@@ -60,7 +49,7 @@ std::size_t DracoPrimitive::point_count() const { return mesh_->num_points(); }
 std::size_t DracoPrimitive::index_count() const { return std::size_t(mesh_->num_faces()) * 3; }
 
 std::string DracoPrimitive::indices(int component_type) const {
-  const std::size_t size = component_size(component_type);
+  const std::size_t size = static_cast<std::size_t>(component_bytes(component_type));
   if (size == 0 || component_type == TINYGLTF_COMPONENT_TYPE_FLOAT || component_type == TINYGLTF_COMPONENT_TYPE_BYTE ||
       component_type == TINYGLTF_COMPONENT_TYPE_SHORT)
     throw InputError(file_, "the index accessor's componentType must be an unsigned integer", where_);
@@ -87,7 +76,7 @@ std::string DracoPrimitive::attribute(int unique_id, int component_type, int com
   if (attr->num_components() != components)
     throw InputError(file_, "Draco attribute " + id + " has " + std::to_string(int(attr->num_components())) +
                                 " components, its accessor " + std::to_string(components), where_);
-  const std::size_t element = component_size(component_type) * static_cast<std::size_t>(components);
+  const std::size_t element = static_cast<std::size_t>(component_bytes(component_type)) * static_cast<std::size_t>(components);
   if (element == 0 || byte_stride < element) throw InputError(file_, "unsupported accessor layout for Draco attribute " + id, where_);
   const bool same_type = gltf_component_type(attr->data_type()) == component_type;
   if (!same_type && component_type != TINYGLTF_COMPONENT_TYPE_FLOAT)

@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "gltf/decompress_geometry.h"
+#include "gltf/gltf_uri.h"
 #include "gltf/required_extensions.h"
 #include "io/read_file.h"
 
@@ -71,21 +72,6 @@ bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const 
 bool refuse_write(std::string* err, const std::string& path, const std::vector<unsigned char>&, void*) {
   if (err) *err += "vlit does not write through the glTF loader: " + path + "\n";
   return false;
-}
-
-// "%20" -> " ": a buffer URI as a file name (glTF URIs are percent-encoded, RFC 3986).
-std::string percent_decode(const std::string& uri) {
-  std::string out;
-  for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
 }
 
 std::string lower(std::string s) {

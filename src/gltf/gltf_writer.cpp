@@ -9,6 +9,7 @@
 
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
+#include "gltf/gltf_uri.h"
 #include "io/atomic_write.h"
 #include "io/read_file.h"
 
@@ -40,21 +41,6 @@ std::string percent_encode_path(const std::string& s) {
 
 bool is_relative_uri(const std::string& uri) {
   return !uri.empty() && uri.rfind("data:", 0) != 0 && uri.find("://") == std::string::npos && uri[0] != '/';
-}
-
-// "%20" -> " ": a URI's path as a file name (glTF URIs are percent-encoded, RFC 3986).
-std::string percent_decode(const std::string& uri) {
-  std::string out;
-  for (std::size_t i = 0; i < uri.size(); ++i) {
-    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
-      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += uri[i];
-    }
-  }
-  return out;
 }
 
 // The image's media type from its first bytes; empty when unknown.

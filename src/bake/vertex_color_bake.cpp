@@ -9,6 +9,7 @@
 
 #include "gltf/accessor_reader.h"
 #include "scene/material.h"
+#include "shading/shading_policy.h"
 
 namespace vlit {
 namespace {
@@ -77,24 +78,15 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
           }
       }
     }
-    // Specular folded into the multiplier of the base colour: + ks x specular / baseColor. In
+    // Specular folded into the multiplier of the base colour (shading/shading_policy.h). In
     // multiply mode the old colour multiplies the diffuse only, so viewer = old x base x diffuse
     // + ks x specular holds without dividing by the old colour.
     const auto& specular = light[i].specular;
     if (!specular.empty()) {
       const PhongMaterial phong = phong_from_metallic_roughness(scene.material_of(sp));
-      const double ks[3] = {phong.ks.x, phong.ks.y, phong.ks.z}, albedo[3] = {phong.kd.x, phong.kd.y, phong.kd.z};
-      for (std::size_t v = 0; v < n; ++v) {
-        const double spec[3] = {specular[v].x, specular[v].y, specular[v].z};
-        bool lost = false;
-        for (int ch = 0; ch < 3; ++ch) {
-          const double term = ks[ch] * spec[ch] * options.exposure;
-          if (!(term > 0)) continue;
-          if (albedo[ch] > 0) rgba[v][ch] += term / albedo[ch];
-          else lost = true;
-        }
-        if (lost) ++report.specular_unrepresentable;
-      }
+      for (std::size_t v = 0; v < n; ++v)
+        if (!add_specular_to_multiplier(phong, static_cast<Vec3d>(specular[v]), options.exposure, rgba[v]))
+          ++report.specular_unrepresentable;
     }
 
     const std::size_t offset = (buffer.data.size() + 3) / 4 * 4;

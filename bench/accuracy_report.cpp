@@ -9,8 +9,8 @@
 // DIR/images/accuracy/*.png when run from DIR). Exit status 1 if any method returned NaN or Inf.
 //
 // Errors are measured against independent long-double Boost.Math references in a different
-// parametrisation (tests/kernels/linear/linear_reference.h: t in [0,1]; tests/kernels/area/
-// area_reference.h: area integrand over the polygon; tests/kernels/area/disk_reference.h: polar
+// parametrisation (reference/linear_reference.h: t in [0,1]; tests/kernels/area/
+// area_reference.h: area integrand over the polygon; reference/disk_reference.h: polar
 // coordinates over the disk). Case inputs are rounded to float first, so the same reference
 // serves the double and the float evaluation: the float error is that of the computation only.
 // Times: one thread, ns per evaluation, median over repetitions of the whole batch.
@@ -32,9 +32,9 @@
 #include <string>
 #include <vector>
 
-#include "kernels/area/area_reference.h"
-#include "kernels/area/disk_reference.h"
-#include "kernels/linear/linear_reference.h"
+#include "area_reference.h"
+#include "disk_reference.h"
+#include "linear_reference.h"
 
 #include "accuracy_blender.h"
 #include "accuracy_methods.h"
@@ -585,7 +585,7 @@ LinearSections linear_report(const Options& o) {
     std::sort(ratio.begin(), ratio.end());
     std::ostringstream md;
     md << "Against the lobe's maximum max_t max(0, Rv.L̂(t))^m (reference: dense search and golden-section refinement "
-          "in long double, tests/kernels/linear/linear_reference.h), the peak method's relative error is: median "
+          "in long double, reference/linear_reference.h), the peak method's relative error is: median "
        << fmt(tmp.rows[0].d.med) << ", p99 " << fmt(tmp.rows[0].d.p99) << ", max " << fmt(tmp.rows[0].d.max)
        << " (double); max " << fmt(tmp.rows[0].f.max) << " (float). ";
     if (!ratio.empty())
@@ -994,7 +994,7 @@ DiskSections disk_report(const Options& o) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// End to end against Blender Cycles (bench/accuracy_blender.h, bench/blender_bake.py)
+// End to end against Blender Cycles (reference/accuracy_blender.h, bench/blender_bake.py)
 
 // Where the end-to-end figure draws an error of exactly 0 (log scale).
 constexpr double kEndToEndZero = 1e-9;
@@ -1521,9 +1521,9 @@ std::string body_text(const Options& o, const std::vector<Section*>& sec, const 
         "horizon, lobe missing the light) do not dominate with meaningless relative errors. Statistics over the "
         "ordinary cases: median, 99th percentile, max.\n"
      << "- **References**, independent of every method measured: long-double Boost.Math Gauss-Kronrod in a different "
-        "parametrisation — linear: `tests/kernels/linear/linear_reference.h` (t in [0,1], split at the horizon, "
-        "the foot and the lobe peak); area: `tests/kernels/area/area_reference.h` (area integrand over the polygon, "
-        "polar/Duffy coordinates); disk: `tests/kernels/area/disk_reference.h` (polar coordinates over the disk, split at "
+        "parametrisation — linear: `reference/linear_reference.h` (t in [0,1], split at the horizon, "
+        "the foot and the lobe peak); area: `reference/area_reference.h` (area integrand over the polygon, "
+        "polar/Duffy coordinates); disk: `reference/disk_reference.h` (polar coordinates over the disk, split at "
         "the horizon and lobe lines). Case inputs are rounded to float first, so one reference serves double and float "
         "and the float error is the computation's own.\n"
      << "- **Time**: ns per evaluation (light × point, including the per-point set-up, excluding per-light "
@@ -1706,14 +1706,14 @@ std::string report_text(const Options& o, const std::vector<Section*>& sections,
         "its half on those cases in the tests.\n"
      << "- **Area contour, \"thin 1e-6\"** (1.9e-5 before): the reference was wrong (polar coordinates about a foot "
         "inside a 1 x 1e-6 strip); the kernel agrees with the strip's exact 1D form to 6e-13 "
-        "(`tests/kernels/area/area_reference.h` now uses its Duffy fan there).\n\n";
+        "(`reference/area_reference.h` now uses its Duffy fan there).\n\n";
   md << "## Not done\n\n"
      << "- **Cycles comparison, lights left out**: it covers what Cycles represents exactly (point lights, "
         "rectangular area lights, linear lights of falloff 2 as point chains). Spots (Cycles 3.4 multiplies its spot "
         "by cos ψ to the axis; `--calibrate` shows it), other polygons, disks, two-sided lights and falloff ≠ 2 are "
         "not compared; shadows are compared apart: with shadows on both sides, on three scenes, in docs/shadows.md (\"Against Blender Cycles with shadows\"; scripts/cycles-shadows-compare.sh).\n"
      << "- **Disk specular, hardest stiff cases** (P 1e-4 from the rim, radius 1e6 seen off-centre, m = 1e4): the "
-        "long-double reference (`tests/kernels/area/disk_reference.h`) takes 2-40 s per case there, so the report checks "
+        "long-double reference (`reference/disk_reference.h`) takes 2-40 s per case there, so the report checks "
         "only the diffuse on them; the disk tests check the exact specular there against closed-form limits.\n"
      << "- **Area peak against the lobe's maximum**: measured for the linear light only (no independent area "
         "lobe-maximum reference yet); the area peak is checked against a dense search in the area tests.\n"

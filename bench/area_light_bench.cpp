@@ -6,7 +6,7 @@
 // Shapes: triangle, quad, regular 8-gon, disk (size 0.3..1.2 at distance 1..3 from P, emitting
 // toward P, N toward the light so the whole light is above the horizon: the quadrature's best case,
 // no kink of max(0, .) inside the light). For each shape 128 seeded cases; errors against the
-// long-double Boost.Math references (tests/kernels/area/area_reference.h, disk_reference.h).
+// long-double Boost.Math references (reference/area_reference.h, disk_reference.h).
 // Diffuse: the closed forms (contour, eq. 9; the disk's analytic contour) against a Gauss-Legendre
 // product rule over the light (polygons: fan triangles, Duffy-collapsed n x n rule; disk: polar
 // n x 2n rule), whose order n is raised until its max error over the cases is <= 10x the closed
@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "kernels/area/area_reference.h"
-#include "kernels/area/disk_reference.h"
+#include "area_reference.h"
+#include "disk_reference.h"
 
 #include "accuracy_methods.h"
 #include "area_light.h"

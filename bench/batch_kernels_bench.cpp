@@ -42,7 +42,7 @@
 
 #include "bake/bake_file.h"
 #include "shading/batch_kernels.h"
-#include "support/light_sources.h"
+#include "light_sources.h"
 
 namespace {
 

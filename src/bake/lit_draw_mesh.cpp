@@ -1,6 +1,7 @@
 #include "bake/lit_draw_mesh.h"
 
 #include "scene/material.h"
+#include "shading/shading_policy.h"
 
 namespace vlit {
 
@@ -14,8 +15,8 @@ raster::DrawMesh lit_draw_mesh(const ScenePrimitive& primitive, const Material& 
   mesh.colors.reserve(primitive.positions.size());
   for (std::size_t v = 0; v < primitive.positions.size(); ++v) {
     mesh.positions.push_back(static_cast<Vec3f>(primitive.positions[v]));
-    Vec3d color = hadamard(phong.kd, static_cast<Vec3d>(light.diffuse[v]));
-    if (!light.specular.empty()) color += hadamard(phong.ks, static_cast<Vec3d>(light.specular[v]));
+    const Vec3d specular = light.specular.empty() ? Vec3d{} : static_cast<Vec3d>(light.specular[v]);
+    const Vec3d color = shaded_color(phong, static_cast<Vec3d>(light.diffuse[v]), light.specular.empty() ? nullptr : &specular);
     mesh.colors.push_back(static_cast<Vec3f>(color));
   }
   return mesh;

@@ -1,6 +1,6 @@
-// What `render` (and the library's render) draws for a lit primitive: each vertex's colour is
-// kd x diffuse + ks x specular, kd and ks from the glTF material (phong_from_metallic_roughness,
-// docs/conventions.md), for the rasterizer, which knows nothing about lighting.
+// What `render` (and the library's render) draws for a lit primitive: each vertex's colour by the
+// shading policy (shading/shading_policy.h: kd x diffuse + ks x specular), for the rasterizer,
+// which knows nothing about lighting.
 #pragma once
 
 #include <cstdint>

@@ -23,6 +23,7 @@
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "cli/openmp_wait_policy.h"
+#include "cli/scene_args.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
@@ -37,7 +38,8 @@ namespace fs = std::filesystem;
 
 struct BakeArgs {
   std::vector<std::string> inputs;
-  std::string output, lights;
+  std::string output;
+  SceneArgs scene;                 // --lights, --no-file-lights, --shadows, --explain, limits
   std::string color_format = "unorm16";
   std::string mode = "replace";
   std::string target = "COLOR_0";
@@ -45,12 +47,7 @@ struct BakeArgs {
   std::string specular = "peak";
   double exposure = 1;
   bool no_unlit = false;
-  bool no_file_lights = false;
   bool quiet = false;
-  bool explain = false;
-  std::string shadows = "off";
-  std::size_t max_vertices = SceneLimits{}.max_vertices;
-  std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
   std::string shard;               // "I/N", "auto" or empty
   bool skip_existing = false;
   bool keep_image_links = false;
@@ -81,10 +78,10 @@ BakeFileOptions file_options(const BakeArgs& args) {
   BakeFileOptions o;
   if (!args.specular_eye.empty()) o.specular_eye = parse_eye(args.specular_eye);
   o.specular = parse_specular(args.specular);
-  o.lights_path = args.lights;
-  o.use_file_lights = !args.no_file_lights;
-  o.limits = {args.max_vertices, args.max_emissive_lights};
-  o.shadows = args.shadows == "on";
+  o.lights_path = args.scene.lights;
+  o.use_file_lights = !args.scene.no_file_lights;
+  o.limits = args.scene.scene_options().limits;
+  o.shadows = args.scene.shadows_on();
   o.embed_images = !args.keep_image_links;
   o.encode.exposure = args.exposure;
   o.encode.mark_unlit = !args.no_unlit;
@@ -135,7 +132,7 @@ int run_single(const BakeArgs& args, const BatchInput& input, BakeFileOptions op
     record.time = utc_timestamp();
     manifest->append(record);
   };
-  if (args.skip_existing && output_is_current(args.output, in, args.lights)) {
+  if (args.skip_existing && output_is_current(args.output, in, args.scene.lights)) {
     if (!args.quiet) std::fprintf(stderr, "%s is newer than %s: skipped (--skip-existing)\n", args.output.c_str(), in.c_str());
     log("skipped", "");
     return 0;
@@ -150,7 +147,7 @@ int run_single(const BakeArgs& args, const BatchInput& input, BakeFileOptions op
     record.seconds = seconds_since(start);
     log("baked", "");
     for (const auto& w : r.warnings) print_warning(w);
-    if (args.explain) print_explain(in, r);
+    if (args.scene.explain) print_explain(in, r);
     if (!args.quiet) print_summary(args.output, r, args.color_format);
   } catch (const std::exception& e) {
     progress.finish();
@@ -204,7 +201,7 @@ int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeF
     const std::string output = item.output.string();
     ManifestRecord record{item.input, item.key, output, shard ? shard->text() : "", "", 0, 0, "", ""};
     const auto start = std::chrono::steady_clock::now();
-    if (args.skip_existing && output_is_current(output, item.input, args.lights)) {
+    if (args.skip_existing && output_is_current(output, item.input, args.scene.lights)) {
       record.status = "skipped";
       ++skipped;
     } else {
@@ -212,9 +209,9 @@ int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeF
       try {
         fs::create_directories(item.output.parent_path(), ec);
         const BakeFileResult r = bake_file(item.input, output, options);
-        if (!r.warnings.empty() || args.explain) progress.clear();
+        if (!r.warnings.empty() || args.scene.explain) progress.clear();
         for (const auto& w : r.warnings) print_warning(w);
-        if (args.explain) print_explain(item.input, r);
+        if (args.scene.explain) print_explain(item.input, r);
         record.status = "baked";
         record.vertices = r.report.vertices;
         ++baked;
@@ -273,8 +270,7 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_option("-o,--output", args->output,
                   "Output file (.glb or .gltf) for one input; for several inputs, a directory")
       ->required();
-  cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")
-      ->check(CLI::ExistingFile);
+  add_scene_options(*cmd, args->scene);
   cmd->add_option("--target", args->target,
                   "Attribute that receives the light: COLOR_n or an application-specific _NAME (default COLOR_0)")
       ->check(CLI::Validator([](const std::string& value) { return target_attribute_problem(value); }, "COLOR_n|_NAME"));
@@ -290,22 +286,10 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_option("--specular", args->specular,
                   "Specular method of linear and area lights with --specular-eye: peak (default), neighborhood:K, exact");
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
-  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual, EXT_lights_area, VLIT_lights_linear, emissive geometry)");
-  cmd->add_option("--shadows", args->shadows,
-                  "on: lights are hidden by the scene's triangles (soft shadows, docs/shadows.md); off (default)")
-      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_flag("--keep-image-links", args->keep_image_links,
                 "In a .glb output, keep the input's image files as links (rewritten relative to the output) "
                 "instead of embedding them; a .gltf output always keeps links");
-  cmd->add_flag("--explain", args->explain,
-                "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
-  cmd->add_option("--max-vertices", args->max_vertices,
-                  "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
-                  "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
-      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--shard", args->shard,
                   "I/N: bake only shard I (0 .. N-1) of the batch; the N shards together bake every input once, "
                   "each input's shard set by its path under its argument (docs/batch-sharding.md). auto: from a "

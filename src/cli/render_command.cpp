@@ -11,6 +11,7 @@
 #include "bake/lit_draw_mesh.h"
 #include "cli/commands.h"
 #include "cli/openmp_wait_policy.h"
+#include "cli/scene_args.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
 #include "core/input_error.h"
@@ -23,20 +24,16 @@ namespace vlit::cli {
 namespace {
 
 struct RenderArgs {
-  std::string input, output, lights;
+  std::string input, output;
+  SceneArgs scene;  // --lights, --no-file-lights, --shadows, --explain, limits
   int width = 800, height = 600, samples = 4;
   double exposure = 1;
   std::vector<double> background{0, 0, 0};
   bool cull_back_faces = false;
   bool quiet = false;
-  bool explain = false;
   std::string specular = "peak";
-  std::string shadows = "off";
   std::string view = "shaded";
   double wire_width = raster::WireframeOptions{}.width;
-  bool no_file_lights = false;
-  std::size_t max_vertices = SceneLimits{}.max_vertices;
-  std::size_t max_emissive_lights = SceneLimits{}.max_emissive_lights;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
 };
 
@@ -72,8 +69,7 @@ int run_render(const RenderArgs& args) {
     throw InputError(args.output, std::to_string(args.width) + " x " + std::to_string(args.height) +
                                       " pixels exceed the limit of " + std::to_string(args.max_pixels) +
                                       " (raise it with --max-pixels)");
-  LoadedScene loaded =
-      load_scene(args.input, args.lights, {{args.max_vertices, args.max_emissive_lights}, !args.no_file_lights});
+  LoadedScene loaded = load_scene(args.input, args.scene.lights, args.scene.scene_options());
   for (const auto& w : loaded.warnings) print_warning(w);
   loaded.gltf.reset();  // the glTF document (with its buffers) is for bake's output, not needed here
   const Scene& scene = loaded.scene;
@@ -114,7 +110,7 @@ int run_render(const RenderArgs& args) {
     request.eye = Vec3d{camera.world_from_camera.m[0][3], camera.world_from_camera.m[1][3], camera.world_from_camera.m[2][3]};
     request.progress = [&](std::size_t done, std::size_t total) { progress.update(done, total); };
     request.shade.specular = specular;
-    request.shadows = args.shadows == "on";
+    request.shadows = args.scene.shadows_on();
     t = Clock::now();
     plan = plan_lighting(scene, request);
     plan_seconds = since(t);
@@ -131,7 +127,7 @@ int run_render(const RenderArgs& args) {
   }
   // The scene's geometry is not needed any more: free it before rasterizing, where a large render
   // peaks (docs/rasterizer.md, memory).
-  const std::string plan_text = args.explain && plan ? describe(*plan, scene) : std::string("plan: none (normals view)\n");
+  const std::string plan_text = args.scene.explain && plan ? describe(*plan, scene) : std::string("plan: none (normals view)\n");
   for (ScenePrimitive& prim : loaded.scene.primitives) {
     std::vector<Vec3d>().swap(prim.positions);
     std::vector<Vec3d>().swap(prim.normals);
@@ -148,7 +144,7 @@ int run_render(const RenderArgs& args) {
       normals_view ? raster::encode_unorm8(image) : raster::encode_srgb8(image, static_cast<float>(args.exposure));
   std::string error;
   if (!raster::write_png(args.output, image.width, image.height, rgb8, &error)) throw InputError(args.output, error);
-  if (args.explain) {
+  if (args.scene.explain) {
     std::printf("%s\n%s%s\n", args.input.c_str(), plan_text.c_str(), openmp_threads_line().c_str());
     std::printf("time: load %.3f s, plan %.3f s, light %.3f s, rasterize %.3f s, encode+write %.3f s\n", load_seconds,
                 plan_seconds, light_seconds, raster_seconds, since(t));
@@ -176,7 +172,7 @@ Runner add_render_command(CLI::App& app) {
                                  : "\"" + path + "\": render writes PNG images only; name the output FILE.png";
           },
           "FILE.png"));
-  cmd->add_option("--lights", args->lights, "LIGHTS.json with lights to add to the asset's own (docs/lights-json.md)")->check(CLI::ExistingFile);
+  add_scene_options(*cmd, args->scene);
   cmd->add_option("--width", args->width, "Image width in pixels (default 800)")->check(CLI::Range(1, 16384));
   cmd->add_option("--height", args->height, "Image height in pixels (default 600)")->check(CLI::Range(1, 16384));
   cmd->add_option("--samples", args->samples, "Samples per pixel for anti-aliasing: 1, 4 (default), 16, 64")
@@ -184,12 +180,8 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--exposure", args->exposure, "Multiplier applied before sRGB encoding (default 1)")->check(CLI::PositiveNumber);
   cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
-  cmd->add_flag("--no-file-lights", args->no_file_lights, "Ignore the lights stored in the asset (KHR_lights_punctual, EXT_lights_area, VLIT_lights_linear, emissive geometry)");
   cmd->add_option("--specular", args->specular,
                   "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
-  cmd->add_option("--shadows", args->shadows,
-                  "on: lights are hidden by the scene's triangles (soft shadows, docs/shadows.md); off (default)")
-      ->check(CLI::IsMember({"on", "off"}));
   cmd->add_option("--view", args->view,
                   "shaded (default); wireframe: triangle edges over the shading; normals: world normals as "
                   "colours, 0.5 n + 0.5, unlit, written without sRGB encoding or exposure (docs/rasterizer.md)")
@@ -197,15 +189,7 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--wire-width", args->wire_width,
                   "Wireframe view: line width in pixels on each side of a shared edge (default 0.5)")
       ->check(CLI::Range(0.01, 64.0));
-  cmd->add_flag("--explain", args->explain,
-                "Print the scene plan (kernels per light, skipped work and why) and per-stage times on stdout");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
-  cmd->add_option("--max-vertices", args->max_vertices,
-                  "Refuse an asset with more vertices than this, counting every instance (default 50000000)")
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--max-emissive-lights", args->max_emissive_lights,
-                  "Keep at most this many lights made from emissive geometry, the brightest (default 64)")
-      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--max-pixels", args->max_pixels, "Refuse an image larger than this many pixels (default 67108864)")
       ->check(CLI::PositiveNumber);
   cmd->footer("The camera is the glTF's first camera if it has one, otherwise a 3/4 view framing the whole scene.");

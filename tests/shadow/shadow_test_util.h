@@ -9,7 +9,7 @@
 #include "shadow/occluder_bvh.h"
 #include "shadow/shadowed_light.h"
 #include "shadow_reference.h"
-#include "support/light_sources.h"
+#include "light_sources.h"
 
 namespace vlit::test {
 

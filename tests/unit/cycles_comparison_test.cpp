@@ -1,4 +1,4 @@
-// The accuracy report's Blender Cycles comparison (bench/accuracy_blender.h): reading Cycles'
+// The accuracy report's Blender Cycles comparison (reference/accuracy_blender.h): reading Cycles'
 // per-corner bakes and matching them to a scene's vertices, the error measure, the comparison
 // lights as LIGHTS.json and as Cycles' point chains. Blender itself is not needed: the Cycles
 // files are written here by hand.
@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "../../bench/accuracy_blender.h"
+#include "accuracy_blender.h"
 #include "io/lights_json.h"
 
 using namespace vlit;

@@ -10,7 +10,7 @@
 
 #include "area_test_util.h"
 #include "disk_light.h"
-#include "kernels/area/disk_reference.h"
+#include "disk_reference.h"
 
 using namespace vlit;
 using namespace vlit::test;

@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "kernels/area/area_test_util.h"
-#include "support/light_sources.h"
+#include "light_sources.h"
 #include "support/test_rng.h"
 #include "batch/atan2_upper.h"
 #include "batch/double_log.h"

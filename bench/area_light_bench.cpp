@@ -12,6 +12,8 @@
 // n x 2n rule), whose order n is raised until its max error over the cases is <= 10x the closed
 // form's (both then at rounding level; or n = 64). Specular: the peak, the neighbourhood (K = 4) and the exact lobe integral at tol
 // 1e-6 and 1e-9, against the product rule of the lobe integrand raised to the exact method's error.
+// The exact rows use the closed form (area_specular_closed.h) where it is within its bound; two
+// more rows time the closed form alone and the adaptive form alone on the same cases.
 // Times: ns per evaluation (per-light preparation excluded, as in the bake loop), best of 3 passes
 // over the cases, each pass repeated until it takes >= 50 ms; single thread.
 #include <algorithm>
@@ -275,6 +277,34 @@ int main(int argc, char** argv) {
       const std::string sname = "specular, Gauss product " + (disk ? "polar " + std::to_string(sorder) + "x" + std::to_string(2 * sorder)
                                                                      : std::to_string(sorder) + "x" + std::to_string(sorder));
       row(shape.name, sname.c_str(), sgl_err, sgl_ns, 0, sorder == 64 && sgl_err > ex_err ? "order cap 64 reached" : "");
+    }
+    if (!disk) {
+      // The exact specular's engines on the same cases (integer m in [1, 1e3]): the closed form
+      // alone (area_specular_closed.h, forced even where its bound refuses it) and the adaptive
+      // form alone (area_specular_exact.h, tol 1e-9); `exact` above dispatches between them.
+      auto engine = [](bool closed_form) {
+        return [closed_form](const Case& c) {
+          const AreaView<double> view = make_area_view(c.prepared, c.sp.p);
+          if (!view.lit) return 0.0;
+          ClipPolygon<double> visible;
+          clip_to_horizon(c.prepared, view, c.sp.n, visible);
+          if (visible.count < 3) return 0.0;
+          return closed_form ? area_specular_closed(visible, view, c.sp.rv, int(c.sp.shininess)).value
+                             : area_specular_exact(visible, view, c.sp.rv, c.sp.shininess, 1e-9);
+        };
+      };
+      int accepted = 0;
+      for (const Case& c : cases) {
+        const AreaView<double> view = make_area_view(c.prepared, c.sp.p);
+        ClipPolygon<double> visible;
+        if (view.lit) clip_to_horizon(c.prepared, view, c.sp.n, visible);
+        if (!view.lit || visible.count < 3 || area_specular_closed(visible, view, c.sp.rv, int(c.sp.shininess)).accepted) ++accepted;
+      }
+      char note[64];
+      std::snprintf(note, sizeof note, "within its bound on %d of %d cases", accepted, int(cases.size()));
+      const auto cf = engine(true), ad = engine(false);
+      row(shape.name, "specular, closed form alone (integer m, forced)", max_error(cases, cf, true), time_ns(cases, cf), 0, note);
+      row(shape.name, "specular, adaptive form alone tol 1e-9", max_error(cases, ad, true), time_ns(cases, ad), 0, "");
     }
   }
   std::fprintf(stderr, "(checksum %g)\n", g_sink);

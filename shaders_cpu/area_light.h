@@ -5,7 +5,8 @@
 //   diffuse  = ∫_A max(0, cos theta) cos theta_l / r^2 dA                   area_diffuse_contour.h
 //   specular = max over the visible light of max(0, Rv.w)^m                  area_specular_peak.h
 //            | peak x covered fraction of its neighbourhood                  area_specular_neighborhood.h
-//            | ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA       area_specular_exact.h
+//            | ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA       area_specular_closed.h (integer m,
+//              within its bound), else area_specular_exact.h
 // Sources: Picott 1992 eq. 9-12 and the sidebar; Nishita and Nakamae 1985; see each file.
 // Conventions: conventions.h. The light is one-sided (emits toward the side from which its
 // vertices are counter-clockwise) unless two_sided; a point behind it, or in its plane, gets 0.
@@ -17,13 +18,28 @@
 // Measured accuracy: docs/area-lights.md, `./build/area/tests/area_light_tests`.
 #pragma once
 
+#include <cmath>
+
 #include "area_diffuse_contour.h"
 #include "area_polygon.h"
+#include "area_specular_closed.h"
 #include "area_specular_exact.h"
 #include "area_specular_neighborhood.h"
 #include "area_specular_peak.h"
 
 namespace vlit {
+
+// The exact specular: the closed form for integer m where its rounding bound holds
+// (area_specular_closed.h), the adaptive contour form otherwise and for real m (area_specular_exact.h).
+template <class R>
+R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>& view, const Vec3<R>& rv, R m,
+                               R tolerance) {
+  if (m == std::floor(m) && m >= R(0) && m <= R(kAreaClosedMaxShininess)) {
+    const AreaSpecularClosed<R> c = area_specular_closed(visible, view, rv, int(m));
+    if (c.accepted) return c.value;
+  }
+  return area_specular_exact(visible, view, rv, m, tolerance);
+}
 
 // Shades with a prepared light (per-light constants computed once): the bake loop's form.
 template <class T>
@@ -51,7 +67,7 @@ Response<T> shade_area(const PreparedAreaLight<T>& light, const ShadingPoint<T>&
       r.specular = static_cast<T>(area_specular_neighborhood(visible, view, rv, m, spec.neighborhood_samples));
       break;
     case SpecularMethod::kExact:
-      r.specular = static_cast<T>(area_specular_exact(visible, view, rv, m, static_cast<R>(spec.exact_tolerance)));
+      r.specular = static_cast<T>(area_specular_exact_dispatch(visible, view, rv, m, static_cast<R>(spec.exact_tolerance)));
       break;
   }
   return r;

@@ -186,7 +186,7 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     switch (spec.method) {
       case SpecularMethod::kNone: break;
       case SpecularMethod::kExact:
-        r.specular += area_specular_exact(piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
+        r.specular += area_specular_exact_dispatch(piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
         break;
       case SpecularMethod::kNeighborhood: break;  // below, on the whole light's ring
       case SpecularMethod::kPeak: {

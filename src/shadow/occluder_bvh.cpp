@@ -56,26 +56,35 @@ Aabb padded(Aabb b) {
   return b;
 }
 
-// The box lies wholly outside the half-space (unit normal): its corner farthest along the normal
-// is behind the plane by more than the rounding of the per-triangle tests could explain. The
-// margin uses max-norms (within sqrt(3) of the Euclidean ones; it is widened by 2 for that).
-bool box_outside_unit(const Aabb& box, const HalfSpace& h) {
-  const Vec3d far{h.normal.x >= 0 ? box.hi.x : box.lo.x, h.normal.y >= 0 ? box.hi.y : box.lo.y,
-                  h.normal.z >= 0 ? box.hi.z : box.lo.z};
-  const Vec3d w = far - h.origin;
+// The signed distance to the half-space's plane (unit normal) of the box's corner farthest along
+// the normal (or, with farthest false, the one least far), and the margin that the rounding of the
+// per-triangle tests could explain. The margin uses max-norms (within sqrt(3) of the Euclidean
+// ones; it is widened by 2 for that).
+struct BoxReach {
+  double distance, margin;
+};
+BoxReach box_reach(const Aabb& box, const HalfSpace& h, bool farthest) {
+  auto pick = [&](double n, double lo, double hi) { return (n >= 0) == farthest ? hi : lo; };
+  const Vec3d corner{pick(h.normal.x, box.lo.x, box.hi.x), pick(h.normal.y, box.lo.y, box.hi.y),
+                     pick(h.normal.z, box.lo.z, box.hi.z)};
+  const Vec3d w = corner - h.origin;
   const Vec3d e = box.hi - box.lo;
   const double scale = std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z)}) + std::max({e.x, e.y, e.z});
-  return dot(h.normal, w) < -2e-9 * scale;
+  return {dot(h.normal, w), 2e-9 * scale};
 }
 
-// The box lies wholly inside the half-space (unit normal), with the same kind of margin.
+// The box lies wholly outside the half-space (unit normal): its corner farthest along the normal
+// is behind the plane by more than the margin.
+bool box_outside_unit(const Aabb& box, const HalfSpace& h) {
+  const BoxReach r = box_reach(box, h, true);
+  return r.distance < -r.margin;
+}
+
+// The box lies wholly inside the half-space (unit normal): its nearest corner is in front by more
+// than the margin.
 bool box_inside_unit(const Aabb& box, const HalfSpace& h) {
-  const Vec3d near{h.normal.x >= 0 ? box.lo.x : box.hi.x, h.normal.y >= 0 ? box.lo.y : box.hi.y,
-                   h.normal.z >= 0 ? box.lo.z : box.hi.z};
-  const Vec3d w = near - h.origin;
-  const Vec3d e = box.hi - box.lo;
-  const double scale = std::max({std::abs(w.x), std::abs(w.y), std::abs(w.z)}) + std::max({e.x, e.y, e.z});
-  return dot(h.normal, w) > 2e-9 * scale;
+  const BoxReach r = box_reach(box, h, false);
+  return r.distance > r.margin;
 }
 
 // The `inside` planes of the silhouette searches with unit normals; more than 4 are never held

@@ -191,3 +191,112 @@ TEST_CASE("crease wedges: a position shared by more than 64 vertices gets none, 
     CHECK(wedges.of(0).size() == (k <= 64 ? static_cast<std::size_t>(k - 1) : 0u));
   }
 }
+
+namespace {
+
+// A sheet crossing the floor at the crease vertex: one triangle in the plane x = 0 with a corner
+// at the origin, one side rising above the floor and one going under it.
+ScenePrimitive crossing_sheet() {
+  ScenePrimitive p;
+  p.positions = {{0, 0, 0}, {0, -1, 1}, {0, -1, -1}};
+  p.normals.assign(3, Vec3d{1, 0, 0});
+  p.triangles = {0, 1, 2};
+  return p;
+}
+
+// A panel in the plane y = -2 emitting toward +y, x in [x0, x1], z in [z0, z1].
+std::vector<Vec3d> wall_panel(double x0, double x1, double z0, double z1) {
+  return {{x0, -2, z0}, {x0, -2, z1}, {x1, -2, z1}, {x1, -2, z0}};
+}
+
+}  // namespace
+
+TEST_CASE("crease wedges: a wedge partly behind the fan's face hides only its part in front of it") {
+  // The floor's crease vertex gets a normal tilted toward -y, so its horizon lets in light from
+  // under the floor's plane. The sheet's wedge spans directions with x < 0 and |z| <= -y on both
+  // sides of the floor's plane; only its part above the floor (z >= 0, in front of the fan's face)
+  // hides anything: below it, the fan's points are reached only through the fan itself.
+  ScenePrimitive floor = crease_floor();
+  const Vec3d tilted = normalize(Vec3d{0, -1, 1});
+  floor.normals[kCreaseVertex] = tilted;
+  const ScenePrimitive sheet = crossing_sheet();
+  Scene scene;
+  scene.primitives = {floor, sheet};
+  const CreaseWedges wedges = SharedPositions(scene).wedges_of(0);
+  REQUIRE(wedges.of(kCreaseVertex).size() == 1);
+  std::vector<Tri> occluders = triangles_of(floor);
+  for (const Tri& t : triangles_of(sheet)) occluders.push_back(t);
+  const OccluderBvh bvh = make_bvh(occluders);
+  const ShadingPoint<double> sp = make_shading_point(floor.positions[kCreaseVertex], tilted, Vec3d{0.3, -4, 1}, 8.0);
+  const ShadeOptions options = options_with(SpecularMethod::kExact);
+
+  SUBCASE("area light across the floor's plane: the part under it stays lit") {
+    const std::vector<Vec3d> light = wall_panel(-1, -0.2, -0.5, 0.5);
+    const auto whole = prepare_light<double>(area_source(light));
+    const auto lower = prepare_light<double>(area_source(wall_panel(-1, -0.2, -0.5, 0)));
+    const auto& area = std::get<PreparedAreaLight<double>>(whole.kernel);
+    const Response<double> got = shade_kernel_shadowed(area, sp, options, bvh, nullptr, wedges.of(kCreaseVertex));
+    const Response<double> want = shade(lower, sp, options);
+    const Response<double> unhidden = shade(whole, sp, options);
+    MESSAGE("crease vertex " << got.diffuse << " / " << got.specular << "; the panel's part under the floor "
+                             << want.diffuse << " / " << want.specular << "; whole panel " << unhidden.diffuse);
+    REQUIRE(want.diffuse > 0.2 * unhidden.diffuse);
+    REQUIRE(want.diffuse < 0.8 * unhidden.diffuse);
+    CHECK(std::abs(got.diffuse - want.diffuse) <= 1e-12 * unhidden.diffuse);
+    CHECK(std::abs(got.specular - want.specular) <= 1e-9 * (unhidden.specular + 1e-300));
+  }
+  SUBCASE("tube across the floor's plane: the half under it stays lit") {
+    const Vec3d q0{-0.6, -2, -0.5}, q1{-0.6, -2, 0.5};
+    const auto whole = prepare_light<double>(linear_source(q0, q1, 2));
+    const auto lower = prepare_light<double>(linear_source(q0, (q0 + q1) * 0.5, 2));
+    const auto& tube = std::get<LinearLight<double>>(whole.kernel);
+    const double got = shade_kernel_shadowed(tube, sp, options_with(SpecularMethod::kNone), bvh, nullptr,
+                                             wedges.of(kCreaseVertex)).diffuse;
+    const double want = 0.5 * shade(lower, sp, options_with(SpecularMethod::kNone)).diffuse;
+    MESSAGE("tube " << got << ", its half under the floor " << want);
+    REQUIRE(want > 0);
+    CHECK(std::abs(got - want) <= 1e-12 * want);
+  }
+  SUBCASE("point lights: under the floor's plane lit, above it hidden") {
+    for (const double z : {-0.3, 0.3}) {
+      PointLight<double> point;
+      point.position = {-0.5, -2, z};
+      const double unhidden = shade_kernel(point, sp, options_with(SpecularMethod::kNone)).diffuse;
+      const double got =
+          shade_kernel_shadowed(point, sp, options_with(SpecularMethod::kNone), bvh, nullptr, wedges.of(kCreaseVertex)).diffuse;
+      CAPTURE(z);
+      REQUIRE(unhidden > 0);
+      CHECK(got == (z < 0 ? unhidden : 0.0));
+    }
+  }
+}
+
+TEST_CASE("crease wedges: a tube that meets a wedge only under the horizon takes the unshadowed kernel") {
+  // The crease vertex's normal tilts toward +x: its horizon is x + z = 0. The tube runs along
+  // z = -0.3 x: its points in the sheet's wedge (x < 0, z > 0) are all under the horizon, its
+  // points over the horizon (x > 0) lie under the floor's plane, outside the wedge. Nothing is
+  // removed, and the value is the unshadowed kernel's, bit for bit.
+  ScenePrimitive floor = crease_floor();
+  const Vec3d tilted = normalize(Vec3d{1, 0, 1});
+  floor.normals[kCreaseVertex] = tilted;
+  const ScenePrimitive sheet = crossing_sheet();
+  Scene scene;
+  scene.primitives = {floor, sheet};
+  const CreaseWedges wedges = SharedPositions(scene).wedges_of(0);
+  REQUIRE(wedges.of(kCreaseVertex).size() == 1);
+  std::vector<Tri> occluders = triangles_of(floor);
+  for (const Tri& t : triangles_of(sheet)) occluders.push_back(t);
+  const OccluderBvh bvh = make_bvh(occluders);
+  const ShadingPoint<double> sp = make_shading_point(floor.positions[kCreaseVertex], tilted, Vec3d{3, -4, 1}, 8.0);
+  for (const double falloff : {0.0, 2.0}) {
+    CAPTURE(falloff);
+    const auto prepared = prepare_light<double>(linear_source({-1, -2, 0.3}, {1, -2, -0.3}, falloff));
+    const auto& tube = std::get<LinearLight<double>>(prepared.kernel);
+    const ShadeOptions options = options_with(SpecularMethod::kExact);
+    const Response<double> got = shade_kernel_shadowed(tube, sp, options, bvh, nullptr, wedges.of(kCreaseVertex));
+    const Response<double> want = shade(prepared, sp, options);
+    REQUIRE(want.diffuse > 0);
+    CHECK(got.diffuse == want.diffuse);
+    CHECK(got.specular == want.specular);
+  }
+}

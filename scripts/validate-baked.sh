@@ -14,6 +14,9 @@ trap 'rm -rf "$out"' EXIT
 vlit=build/release/vlit
 $vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/studio.glb" -q
 $vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/studio.gltf" --color-format unorm8 -q
+# Written with EXT_meshopt_compression (bake --meshopt), binary and text.
+$vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/studio-meshopt.glb" --meshopt -q
+$vlit bake assets/demo/studio.glb --lights assets/demo/lights.json -o "$out/studio-meshopt.gltf" --meshopt --color-format unorm8 -q
 # Lights stored in the file (EXT_lights_area, VLIT_lights_linear, emissive lines and triangles),
 # with and without specular folded in.
 $vlit bake assets/examples/file-lights.glb -o "$out/file-lights.glb" -q
@@ -32,6 +35,7 @@ for f in assets/samples/*/*.gltf; do
       [[ -e "$copy/$image" ]] || printf "$png_1x1" > "$copy/$image"
     done
   $vlit bake "$copy/$name.gltf" --lights assets/demo/lights.json -o "$out/$name.glb" -q
+  $vlit bake "$copy/$name.gltf" --lights assets/demo/lights.json -o "$out/$name-meshopt.glb" --meshopt -q
 done
 # A Draco-compressed input (Debian package draco), decoded by vlit and written uncompressed.
 if command -v draco_transcoder >/dev/null; then

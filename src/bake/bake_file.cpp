@@ -74,6 +74,7 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
   t = Clock::now();
   GltfWriteOptions write;
   write.embed_images = options.embed_images;
+  write.meshopt = options.meshopt;
   write_gltf(std::move(model), input, output, write);
   result.seconds.write = since(t);
   return result;

@@ -21,6 +21,7 @@ struct BakeFileOptions {
   bool float_batch = true;        // diffuse in the float SIMD batch kernels where they apply (LightingRequest)
   bool shadows = false;           // --shadows on (docs/shadows.md)
   bool embed_images = true;       // a .glb output embeds the input's image files (--keep-image-links: false)
+  bool meshopt = false;           // --meshopt: vertex and index data written with EXT_meshopt_compression
   BakeOptions encode;             // target attribute, format, exposure, unlit
   // Bake specular for this eye (world space), folded into the stored multiplier
   // (vertex_color_bake.h); no specular without an eye.

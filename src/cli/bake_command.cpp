@@ -51,6 +51,7 @@ struct BakeArgs {
   std::string shard;               // "I/N", "auto" or empty
   bool skip_existing = false;
   bool keep_image_links = false;
+  bool meshopt = false;
   std::string manifest;            // JSON lines, appended; empty: none
 };
 
@@ -83,6 +84,7 @@ BakeFileOptions file_options(const BakeArgs& args) {
   o.limits = args.scene.scene_options().limits;
   o.shadows = args.scene.shadows_on();
   o.embed_images = !args.keep_image_links;
+  o.meshopt = args.meshopt;
   o.encode.exposure = args.exposure;
   o.encode.mark_unlit = !args.no_unlit;
   o.encode.target = args.target;
@@ -289,6 +291,9 @@ Runner add_bake_command(CLI::App& app) {
   cmd->add_flag("--keep-image-links", args->keep_image_links,
                 "In a .glb output, keep the input's image files as links (rewritten relative to the output) "
                 "instead of embedding them; a .gltf output always keeps links");
+  cmd->add_flag("--meshopt", args->meshopt,
+                "Write the output's vertex and index data compressed with EXT_meshopt_compression (lossless; the "
+                "output then requires the extension, as gltfpack -c writes; docs/gltf-output.md)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr (warnings and errors are still printed)");
   cmd->add_option("--shard", args->shard,
                   "I/N: bake only shard I (0 .. N-1) of the batch; the N shards together bake every input once, "

@@ -10,6 +10,7 @@
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
 #include "gltf/gltf_uri.h"
+#include "gltf/meshopt_view_encoder.h"
 #include "io/atomic_write.h"
 #include "io/read_file.h"
 
@@ -149,16 +150,20 @@ void append_u32(std::string& s, std::uint32_t v) { s.append(reinterpret_cast<con
 
 // Applies repair_serialized_json to a .gltf text or to the JSON chunk of a .glb, keeping the
 // binary chunk as it is.
-std::string repaired(const std::string& bytes, bool binary, const tinygltf::Model& model) {
+// Also adds what the meshopt encoding needs in the JSON.
+std::string repaired(const std::string& bytes, bool binary, const tinygltf::Model& model,
+                     const MeshoptEncoding& meshopt) {
   if (!binary) {
     nlohmann::json root = nlohmann::json::parse(bytes);
     repair_serialized_json(root, model);
+    add_meshopt_json(root, meshopt);
     return root.dump(2);
   }
   // GLB: 12-byte header, then chunks of (length, type, data) with 4-byte aligned lengths.
   const std::uint32_t json_length = read_u32(bytes, 12);
   nlohmann::json root = nlohmann::json::parse(bytes.substr(20, json_length));
   repair_serialized_json(root, model);
+  add_meshopt_json(root, meshopt);
   std::string json = root.dump();
   while (json.size() % 4 != 0) json.push_back(' ');
   const std::string rest = bytes.substr(20 + json_length);
@@ -184,7 +189,7 @@ void write_gltf(tinygltf::Model model, const std::string& input_path, const std:
     throw InputError(output_path, "output must end in .glb or .gltf");
   }();
 
-  if (binary) merge_buffers(model);
+  if (binary || options.meshopt) merge_buffers(model);  // the encoder reads buffer 0
   else
     for (auto& b : model.buffers) b.uri.clear();
 
@@ -200,12 +205,14 @@ void write_gltf(tinygltf::Model model, const std::string& input_path, const std:
         image.uri = percent_encode_path(prefix.generic_string()) + "/" + image.uri;
   }
 
+  const MeshoptEncoding meshopt = options.meshopt ? encode_views_with_meshopt(model) : MeshoptEncoding{};
+
   tinygltf::TinyGLTF writer;
   writer.SetImageWriter(&pass_image_through, nullptr);
   std::ostringstream stream;
   if (!writer.WriteGltfSceneToStream(&model, stream, /*prettyPrint=*/!binary, binary))
     throw InputError(output_path, "tinygltf could not serialize the model");
-  write_file_atomically(output_path, repaired(stream.str(), binary, model));
+  write_file_atomically(output_path, repaired(stream.str(), binary, model, meshopt));
 }
 
 }  // namespace vlit

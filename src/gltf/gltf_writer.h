@@ -19,6 +19,7 @@ namespace vlit {
 
 struct GltfWriteOptions {
   bool embed_images = true;  // .glb only: relative URI images become bufferViews (--keep-image-links: false)
+  bool meshopt = false;      // vertex and index data encoded with EXT_meshopt_compression (meshopt_view_encoder.h)
 };
 
 // `input_path` is the file the model was read from (for relative image URIs).

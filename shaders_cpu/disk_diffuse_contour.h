@@ -85,38 +85,45 @@ R cos_integral_series(R q, R s, R mid, R w) {
 
 }  // namespace disk_detail
 
-// Diffuse response of a disk of radius `radius` seen through `view` (area_polygon.h: D = c - P,
-// view.normal toward P, view.u x view.v = view.normal, height h > 0) at P with unit normal N.
+// The quantities of the header's formulas for one disk seen from P (with normal N).
 template <class R>
-R disk_diffuse_contour(const AreaView<R>& view, R radius, const Vec3<R>& N) {
-  if (!view.lit) return R(0);
-  const R pi = R(M_PI);
-  const R h = view.height, h2 = h * h, big_r = radius;
-  const R du = dot(view.D, view.u), dv = dot(view.D, view.v);
-  const R rho_par = std::hypot(du, dv);
-  const R cphi = rho_par > R(0) ? du / rho_par : R(1), sphi = rho_par > R(0) ? dv / rho_par : R(0);
-  const R nn = dot(N, view.normal), nu = dot(N, view.u), nv = dot(N, view.v);
-  const R n_dhat = nu * cphi + nv * sphi;     // N . dhat
-  const R n_ndhat = nv * cphi - nu * sphi;    // N . (n x dhat)
-  const R inner = h2 + (rho_par - big_r) * (rho_par - big_r);  // |P - nearest rim point|^2
-  const R outer = h2 + (rho_par + big_r) * (rho_par + big_r);  // |P - farthest rim point|^2
-  const R s = std::sqrt(inner) * std::sqrt(outer);
-  const R a = h2 + rho_par * rho_par + big_r * big_r;
-  const R x = h2 + (big_r - rho_par) * (big_r + rho_par);
-  const R x_plus_s = x >= R(0) ? x + s : R(4) * rho_par * rho_par * h2 / (s - x);
+struct DiskFrame {
+  R h, h2, big_r, rho_par, cphi, sphi, nn, nu, nv, n_dhat, n_ndhat, inner, outer, s, a, x;
+};
 
-  // Horizon: N.(c + R e(theta) - P) = N.D + R mu cos(theta - thetaN) >= 0.
-  const R nd = dot(N, view.D);
-  const R mu = std::hypot(nu, nv);
-  if (nd >= big_r * mu) {  // the whole disk is above the tangent plane: full circle
-    const R id = pi * big_r * big_r / (s * (a + s)) * (R(2) * h * rho_par * n_dhat - nn * x_plus_s);
-    return std::max(id, R(0));
-  }
-  if (nd <= -big_r * mu) return R(0);  // entirely below the horizon
-  const R tau = -nd / (big_r * mu);    // in (-1, 1)
-  const R omega = std::atan2(std::sqrt((R(1) - tau) * (R(1) + tau)), tau);  // half-width of the visible arc
-  const R theta_n = std::atan2(nv, nu);
-  const R theta1 = theta_n - omega, theta2 = theta_n + omega;
+template <class R>
+DiskFrame<R> disk_frame(const AreaView<R>& view, R radius, const Vec3<R>& N) {
+  DiskFrame<R> f;
+  f.h = view.height;
+  f.h2 = f.h * f.h;
+  f.big_r = radius;
+  const R du = dot(view.D, view.u), dv = dot(view.D, view.v);
+  f.rho_par = std::hypot(du, dv);
+  f.cphi = f.rho_par > R(0) ? du / f.rho_par : R(1);
+  f.sphi = f.rho_par > R(0) ? dv / f.rho_par : R(0);
+  f.nn = dot(N, view.normal);
+  f.nu = dot(N, view.u);
+  f.nv = dot(N, view.v);
+  f.n_dhat = f.nu * f.cphi + f.nv * f.sphi;   // N . dhat
+  f.n_ndhat = f.nv * f.cphi - f.nu * f.sphi;  // N . (n x dhat)
+  f.inner = f.h2 + (f.rho_par - f.big_r) * (f.rho_par - f.big_r);  // |P - nearest rim point|^2
+  f.outer = f.h2 + (f.rho_par + f.big_r) * (f.rho_par + f.big_r);  // |P - farthest rim point|^2
+  f.s = std::sqrt(f.inner) * std::sqrt(f.outer);
+  f.a = f.h2 + f.rho_par * f.rho_par + f.big_r * f.big_r;
+  f.x = f.h2 + (f.big_r - f.rho_par) * (f.big_r + f.rho_par);
+  return f;
+}
+
+// The arc part of the contour integral, R ∫ N.(r x r') / |r|^2 dtheta, over the rim arc from
+// theta1 counter-clockwise (about view.normal) to theta2 = theta1 + 2 omega, omega in (0, pi]
+// (the arc's half-width, passed as well so that the caller's rounding of theta2 is not redone).
+// The diffuse of a region bounded by rim arcs and straight edges a -> b is
+// -1/2 (Σ arcs + Σ edges), each edge atan2(|a x b|, a.b) / |a x b| N.(a x b) (a, b from P).
+template <class R>
+R disk_arc_contour(const AreaView<R>& view, const DiskFrame<R>& f, R theta1, R theta2, R omega) {
+  const R pi = R(M_PI);
+  const R h = f.h, h2 = f.h2, big_r = f.big_r, rho_par = f.rho_par, cphi = f.cphi, sphi = f.sphi;
+  const R nn = f.nn, n_dhat = f.n_dhat, n_ndhat = f.n_ndhat, inner = f.inner, outer = f.outer, s = f.s, a = f.a, x = f.x;
   R psi1 = std::remainder(theta1 - std::atan2(sphi, cphi), R(2) * pi);  // in [-pi, pi]
   const R psi2 = psi1 + R(2) * omega;
   const R mid = psi1 + omega;
@@ -151,13 +158,42 @@ R disk_diffuse_contour(const AreaView<R>& view, R radius, const Vec3<R>& N) {
     const R kk = nn * (x - R(2) * h2) / (R(2) * big_r) - a * h * n_dhat / (R(2) * big_r * rho_par);
     arc = kk * j0 + alpha * (R(2) * omega) / rho + beta * js;
   }
+  return big_r * arc;
+}
+
+// Diffuse response of a disk of radius `radius` seen through `view` (area_polygon.h: D = c - P,
+// view.normal toward P, view.u x view.v = view.normal, height h > 0) at P with unit normal N.
+template <class R>
+R disk_diffuse_contour(const AreaView<R>& view, R radius, const Vec3<R>& N) {
+  if (!view.lit) return R(0);
+  const R pi = R(M_PI);
+  const DiskFrame<R> f = disk_frame(view, radius, N);
+  const R h = f.h, h2 = f.h2, big_r = f.big_r, rho_par = f.rho_par, nn = f.nn, nu = f.nu, nv = f.nv;
+  const R n_dhat = f.n_dhat, s = f.s, a = f.a, x = f.x;
+  const R x_plus_s = x >= R(0) ? x + s : R(4) * rho_par * rho_par * h2 / (s - x);
+
+  // Horizon: N.(c + R e(theta) - P) = N.D + R mu cos(theta - thetaN) >= 0.
+  const R nd = dot(N, view.D);
+  const R mu = std::hypot(nu, nv);
+  if (nd >= big_r * mu) {  // the whole disk is above the tangent plane: full circle
+    const R id = pi * big_r * big_r / (s * (a + s)) * (R(2) * h * rho_par * n_dhat - nn * x_plus_s);
+    return std::max(id, R(0));
+  }
+  if (nd <= -big_r * mu) return R(0);  // entirely below the horizon
+  const R tau = -nd / (big_r * mu);    // in (-1, 1)
+  const R omega = std::atan2(std::sqrt((R(1) - tau) * (R(1) + tau)), tau);  // half-width of the visible arc
+  const R theta_n = std::atan2(nv, nu);
+  const R theta1 = theta_n - omega, theta2 = theta_n + omega;
+  const R arc = disk_arc_contour(view, f, theta1, theta2, omega);
   // Chord from r(theta2) back to r(theta1): a straight edge of eq. 9.
+  const Vec3<R> e1 = view.u * std::cos(theta1) + view.v * std::sin(theta1);
+  const Vec3<R> e2 = view.u * std::cos(theta2) + view.v * std::sin(theta2);
   const Vec3<R> ra = view.D + e2 * big_r, rb = view.D + e1 * big_r;
   const Vec3<R> cr = cross(view.D, (e1 - e2) * big_r) + cross(e2, e1) * (big_r * big_r);
   const R len = length(cr);
   R chord = R(0);
   if (len > R(0)) chord = std::atan2(len, dot(ra, rb)) / len * dot(N, cr);
-  const R id = R(-0.5) * (big_r * arc + chord);
+  const R id = R(-0.5) * (arc + chord);
   return std::max(id, R(0));
 }
 

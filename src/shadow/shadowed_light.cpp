@@ -5,6 +5,7 @@
 #include "shadow/area_silhouette.h"
 #include "shadow/area_visibility.h"
 #include "shadow/crease_wedges.h"
+#include "shadow/disk_pieces.h"
 #include "shadow/linear_visibility.h"
 
 namespace vlit {
@@ -119,11 +120,14 @@ Response<double> shade_linear_shadowed(const LinearLight<double>& light, const S
 
 // The light's visible pieces, each evaluated with the area kernels; `unoccluded()` when no
 // occluder reaches between P and the light.
+// For a disk (`disk` not null), `light` is its circumscribed polygon: each visible piece is
+// intersected with the disk for the diffuse (disk_pieces.h), and with the disk's equal-area
+// polygon for the specular methods.
 template <class Unoccluded>
 Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, const ShadingPoint<double>& sp,
                                      const ShadeOptions& options, const OccluderBvh& occluders,
                                      const SilhouetteCluster* cluster, std::span<const WedgeCone> wedges,
-                                     const Unoccluded& unoccluded) {
+                                     const Unoccluded& unoccluded, const PreparedDiskLight<double>* disk = nullptr) {
   const SpecularOptions spec = effective_specular(options);
   const AreaView<double> view = make_area_view(light, sp.p);
   if (!view.lit) return {};
@@ -172,28 +176,36 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   if (nothing_reaches) return unoccluded();
   const LightPieces& pieces = *visible;
   Response<double> r;
-  ClipPolygon<double> piece;
-  auto load = [&](std::size_t i) {
+  ClipPolygon<double> piece, spec_piece;
+  thread_local PreparedAreaLight<double> disk_polygon;  // a disk's equal-area polygon, for the specular
+  if (disk) disk_polygon = equal_area_polygon(*disk);
+  // Piece i; with `for_specular`, of a disk, clipped to its equal-area polygon.
+  auto load = [&](std::size_t i, bool for_specular = false) -> const ClipPolygon<double>& {
     const int n = pieces.start[i + 1] - pieces.start[i];
     piece.count = n;
     std::copy(pieces.points.begin() + pieces.start[i], pieces.points.begin() + pieces.start[i + 1], piece.d.begin());
+    if (!disk || !for_specular) return piece;
+    clip_piece_to_polygon(piece, disk_polygon, view, spec_piece);
+    return spec_piece;
   };
   AreaPeak<double> best;
   best.angle = 4;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     load(i);
-    r.diffuse += area_diffuse_contour(light, view, piece, sp.n);
+    r.diffuse += disk ? disk_piece_diffuse(view, disk->radius, sp.n, piece) : area_diffuse_contour(light, view, piece, sp.n);
+    if (spec.method != SpecularMethod::kExact && spec.method != SpecularMethod::kPeak) continue;
+    const ClipPolygon<double>& lobe_piece = load(i, true);
+    if (lobe_piece.count < 3) continue;
     switch (spec.method) {
-      case SpecularMethod::kNone: break;
       case SpecularMethod::kExact:
-        r.specular += area_specular_exact_dispatch(piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
+        r.specular += area_specular_exact_dispatch(lobe_piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
         break;
-      case SpecularMethod::kNeighborhood: break;  // below, on the whole light's ring
       case SpecularMethod::kPeak: {
-        const AreaPeak<double> peak = area_specular_peak_direction(piece, view, sp.rv);
+        const AreaPeak<double> peak = area_specular_peak_direction(lobe_piece, view, sp.rv);
         if (peak.visible && peak.angle < best.angle) best = peak;
         break;
       }
+      default: break;
     }
   }
   if (best.visible && spec.method == SpecularMethod::kPeak) r.specular = phong_lobe_from_angle(best.angle, sp.shininess);
@@ -201,12 +213,14 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     // area_specular_neighborhood.h's rule on the whole light (its peak direction and ring), each
     // of the K + 1 directions counted only if it reaches a visible piece: never more than the
     // unshadowed value, equal to it when the peak and its ring are unhidden.
-    const AreaPeak<double> whole = area_specular_peak_direction(horizon, view, sp.rv);
+    ClipPolygon<double> lobe_horizon;  // a disk: its equal-area polygon's horizon clip
+    if (disk) clip_to_horizon(disk_polygon, view, sp.n, lobe_horizon);
+    const AreaPeak<double> whole = area_specular_peak_direction(disk ? lobe_horizon : horizon, view, sp.rv);
     const double peak_value = whole.visible ? phong_lobe_from_angle(whole.angle, sp.shininess) : 0.0;
     auto reaches_visible = [&](const Vec3d& dir) {
       for (std::size_t i = 0; i < pieces.size(); ++i) {
-        load(i);
-        if (ray_hits_polygon(piece, view, dir)) return true;
+        const ClipPolygon<double>& lobe_piece = load(i, true);
+        if (lobe_piece.count >= 3 && ray_hits_polygon(lobe_piece, view, dir)) return true;
       }
       return false;
     };
@@ -239,7 +253,7 @@ double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
 }  // namespace
 
 // The regular n-gon of the disk's area: its inscribed n-gon scaled by sqrt(2 pi / (n sin(2 pi / n))).
-PreparedAreaLight<double> shadowed_polygon(const PreparedDiskLight<double>& disk) {
+PreparedAreaLight<double> equal_area_polygon(const PreparedDiskLight<double>& disk) {
   PreparedAreaLight<double> polygon = disk.inscribed;
   const int n = polygon.count;
   const double scale = std::sqrt(2 * M_PI / (n * std::sin(2 * M_PI / n)));
@@ -260,7 +274,7 @@ Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& s
                                [&] { return shade_area(k, sp, effective_specular(options)); });
   } else if constexpr (std::is_same_v<K, PreparedDiskLight<double>>) {
     return shade_area_shadowed(shadowed_polygon(k), sp, options, occluders, cluster, wedges,
-                               [&] { return shade_kernel<double>(k, sp, options); });
+                               [&] { return shade_kernel<double>(k, sp, options); }, &k);
   } else {
     const Response<double> r = shade_kernel<double>(k, sp, options);
     if (r.diffuse == 0 && r.specular == 0) return r;

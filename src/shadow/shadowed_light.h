@@ -17,8 +17,10 @@
 //   sums over the pieces (both are integrals over the light: contour sums are additive over a
 //   partition), the peak is the largest peak over the pieces, the neighbourhood keeps the whole
 //   light's peak direction and ring and counts only the directions that reach a visible piece;
-// - disk: shadowed as its equal-area regular 64-gon (the disk kernel is a polygon bracket
-//   itself); unshadowed points use the disk kernel unchanged.
+// - disk: the visible pieces of its circumscribed regular 64-gon, each intersected with the disk
+//   for the diffuse (straight edges and rim arcs, disk_pieces.h: exact, continuous with the
+//   unshadowed disk kernel), and with its equal-area 64-gon for the specular methods; unshadowed
+//   points use the disk kernel unchanged.
 // When no occluder reaches between P and the light the unshadowed kernel is called, so a light
 // nothing hides gives bit-identical results with shadows on or off.
 #pragma once
@@ -43,10 +45,14 @@ Response<double> shade_kernel_shadowed(const K& kernel, const ShadingPoint<doubl
                                        const OccluderBvh& occluders, const SilhouetteCluster* cluster = nullptr,
                                        std::span<const WedgeCone> wedges = {});
 
-// The polygon whose visible part is computed: the light itself, or a disk's equal-area regular
-// 64-gon.
+// The polygon whose visible part is computed: the light itself, or the regular 64-gon
+// circumscribed about a disk (its visible pieces are then intersected with the disk:
+// disk_pieces.h).
 inline const PreparedAreaLight<double>& shadowed_polygon(const PreparedAreaLight<double>& area) { return area; }
-PreparedAreaLight<double> shadowed_polygon(const PreparedDiskLight<double>& disk);
+inline const PreparedAreaLight<double>& shadowed_polygon(const PreparedDiskLight<double>& disk) { return disk.circumscribed; }
+// A disk's equal-area regular 64-gon: the peak, neighbourhood and exact specular of a partly
+// hidden disk are those of its visible part of this polygon.
+PreparedAreaLight<double> equal_area_polygon(const PreparedDiskLight<double>& disk);
 
 // Dispatching form, range window included (as shade() in prepared_light.h).
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,

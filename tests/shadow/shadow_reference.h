@@ -103,6 +103,31 @@ inline std::array<Estimate, 2> reference_area(const std::vector<Vec3d>& polygon,
   return total;
 }
 
+// Diffuse of a one-sided disk light (centre c, unit normal nl toward the side it emits to, radius
+// r), with grid x grid jittered samples uniform in area (radius sqrt(u1) r, angle 2 pi u2).
+inline Estimate reference_disk(const Vec3d& c, const Vec3d& nl, double r, const ReferencePoint& pt,
+                               const std::vector<Tri>& occluders, int grid, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> jitter(0.0, 1.0);
+  const Vec3d helper = std::abs(nl.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+  const Vec3d e1 = normalize(cross(nl, helper)), e2 = cross(nl, e1);
+  Accumulator diffuse;
+  for (int i = 0; i < grid; ++i)
+    for (int j = 0; j < grid; ++j) {
+      const double u1 = (i + jitter(rng)) / grid, u2 = (j + jitter(rng)) / grid;
+      const double rho = r * std::sqrt(u1), phi = 2 * M_PI * u2;
+      const Vec3d y = c + e1 * (rho * std::cos(phi)) + e2 * (rho * std::sin(phi));
+      const Vec3d w = y - pt.p;
+      const double r2 = length_squared(w);
+      const Vec3d wn = w / std::sqrt(r2);
+      const double cos_theta = dot(pt.n, wn), cos_l = -dot(nl, wn);
+      double fd = 0;
+      if (cos_theta > 0 && cos_l > 0 && !reference_blocked(pt.p, y, occluders)) fd = cos_theta * cos_l / r2;
+      diffuse.add(fd);
+    }
+  return diffuse.estimate(M_PI * r * r);
+}
+
 // Diffuse of a linear light (intensity per unit t) with falloff n, `samples` jittered strata in t.
 inline Estimate reference_linear(const Vec3d& q0, const Vec3d& q1, double falloff, const ReferencePoint& pt,
                                  const std::vector<Tri>& occluders, int samples, unsigned seed) {

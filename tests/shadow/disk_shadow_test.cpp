@@ -1,0 +1,100 @@
+// Shadowed disk lights are the disk itself (src/shadow/disk_pieces.h): the visible pieces of the
+// disk's circumscribed polygon intersected with the disk, their diffuse from straight edges and
+// rim arcs. Checked against exact values that need no disk-piece code (the open disk kernel
+// minus a projected square's polygon kernel; half the open disk by symmetry) and against
+// independent shadow rays over the disk.
+#include <doctest/doctest.h>
+
+#include <random>
+
+#include "shadow/disk_pieces.h"
+#include "shadow/shadowed_light.h"
+#include "shadow_reference.h"
+#include "shadow_test_util.h"
+
+using namespace vlit;
+using namespace vlit::test;
+
+namespace {
+
+constexpr double kRadius = 0.5, kHeight = 2;
+
+PreparedLight<double> overhead_disk() { return prepare_light<double>(disk_source({0, 0, kHeight}, {0, 0, -1}, kRadius)); }
+
+ShadeOptions diffuse_only() { return options_with(SpecularMethod::kNone); }
+
+}  // namespace
+
+TEST_CASE("a shadowed disk: a small square hidden in its middle takes exactly that square's light away") {
+  // A square occluder at height z0 whose projection from P onto the disk's plane lies inside the
+  // disk: the visible part is the disk minus that projected square, so the value is the open disk's
+  // minus the square's own light (a polygon light of the same radiance). The visible pieces the
+  // silhouettes make reach the rim, so their arcs carry the result.
+  for (const Vec3d p : {Vec3d{0, 0, 0}, Vec3d{0.3, -0.2, 0}, Vec3d{-0.6, 0.1, 0.5}}) {
+    CAPTURE(p);
+    const ShadingPoint<double> sp = make_shading_point(p, Vec3d{0, 0, 1}, Vec3d{0, 0, 5}, 10.0);
+    const double z0 = 1.2, half = 0.05;
+    const Vec3d middle = p + (Vec3d{0.1, 0.05, kHeight} - p) * ((z0 - p.z) / (kHeight - p.z));
+    std::vector<Tri> tris;
+    add_quad(tris, middle + Vec3d{-half, -half, 0}, {2 * half, 0, 0}, {0, 2 * half, 0});
+    const OccluderBvh bvh = make_bvh(tris);
+    // The square's projection onto z = kHeight, as a light facing down.
+    std::vector<Vec3d> shadow;
+    for (const Vec3d& corner : {Vec3d{-half, -half, 0}, Vec3d{-half, half, 0}, Vec3d{half, half, 0}, Vec3d{half, -half, 0}})
+      shadow.push_back(p + (middle + corner - p) * ((kHeight - p.z) / (z0 - p.z)));
+    for (const Vec3d& x : shadow) REQUIRE(std::hypot(x.x, x.y) < kRadius);
+    const double open = shade(overhead_disk(), sp, diffuse_only()).diffuse;
+    const double square = shade(prepare_light<double>(area_source(shadow)), sp, diffuse_only()).diffuse;
+    for (const AreaShadowMethod method : {AreaShadowMethod::kSilhouette, AreaShadowMethod::kTriangleCuts}) {
+      ShadeOptions o = diffuse_only();
+      o.area_shadows = method;
+      const double got = shade_shadowed(overhead_disk(), sp, o, bvh).diffuse;
+      MESSAGE("disk " << open << " - square " << square << " = " << open - square << "; shadowed " << got);
+      REQUIRE(square > 0.01 * open);
+      CHECK(std::abs(got - (open - square)) <= 1e-12 * open);
+    }
+  }
+}
+
+TEST_CASE("a shadowed disk: a plate over half of it leaves exactly half (mirror symmetry)") {
+  std::vector<Tri> tris;
+  add_quad(tris, {0, -3, 1}, {3, 0, 0}, {0, 6, 0});  // x >= 0 at height 1
+  const OccluderBvh bvh = make_bvh(tris);
+  for (const double z : {0.0, 1.0, 1.9}) {
+    CAPTURE(z);
+    const ShadingPoint<double> sp = make_shading_point(Vec3d{0, 0, z - 1e-3 * (z > 0.5)}, Vec3d{0, 0, 1}, Vec3d{0, 0, 5}, 10.0);
+    const double open = shade(overhead_disk(), sp, diffuse_only()).diffuse;
+    if (sp.p.z >= 1) continue;  // above the plate: nothing hides the disk
+    const double got = shade_shadowed(overhead_disk(), sp, diffuse_only(), bvh).diffuse;
+    CHECK(std::abs(got - 0.5 * open) <= 1e-12 * open);
+  }
+}
+
+TEST_CASE("a shadowed disk agrees with shadow rays over the disk (random occluders, tilted disk)") {
+  std::mt19937_64 rng(977);
+  std::uniform_real_distribution<double> u(-1.2, 1.2), z(0.4, 1.6), small(-0.3, 0.3);
+  const Vec3d c{0.2, -0.1, 2.2}, nl = normalize(Vec3d{0.2, 0.1, -1});
+  const double r = 0.8;
+  const PreparedLight<double> disk = prepare_light<double>(disk_source(c, nl, r));
+  int partly = 0;
+  for (int trial = 0; trial < 4; ++trial) {
+    std::vector<Tri> tris;
+    for (int k = 0; k < 12; ++k) {
+      const Vec3d a{u(rng), u(rng), z(rng)};
+      tris.push_back({a, a + Vec3d{small(rng), small(rng), small(rng)}, a + Vec3d{small(rng), small(rng), small(rng)}});
+    }
+    const OccluderBvh bvh = make_bvh(tris);
+    for (int k = 0; k < 4; ++k) {
+      const ShadingPoint<double> sp = make_shading_point(Vec3d{u(rng), u(rng), 0}, Vec3d{0, 0, 1}, Vec3d{0, 0, 5}, 10.0);
+      const double open = shade(disk, sp, diffuse_only()).diffuse;
+      const double got = shade_shadowed(disk, sp, diffuse_only(), bvh).diffuse;
+      const Estimate ref = reference_disk(c, nl, r, {sp.p, sp.n, sp.rv, 1}, tris, 400, 31u + trial * 7 + k);
+      CAPTURE(trial);
+      CAPTURE(k);
+      MESSAGE("open " << open << " shadowed " << got << " rays " << ref.value << " +- " << ref.standard_error);
+      CHECK(std::abs(got - ref.value) <= 4 * ref.standard_error + 1e-9 * open);
+      partly += got < 0.99 * open && got > 0.01 * open;
+    }
+  }
+  CHECK(partly >= 4);
+}

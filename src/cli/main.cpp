@@ -6,6 +6,7 @@
 #include "cli/openmp_wait_policy.h"
 #include "cli/option_suggestion.h"
 #include "cli/terminal.h"
+#include "cli/usage_error.h"
 #include "core/input_error.h"
 #include "core/version.h"
 
@@ -47,6 +48,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("probe")) return probe();
     if (app.got_subcommand("manifest-summary")) return manifest_summary();
+  } catch (const vlit::cli::UsageError& e) {
+    vlit::cli::print_error(e.what());
+    return 2;
   } catch (const vlit::InputError& e) {
     vlit::cli::print_error(e.what());
     return 1;

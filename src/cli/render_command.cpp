@@ -18,6 +18,7 @@
 #include "cli/scene_args.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
+#include "cli/vector_option.h"
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
 #include "raster/raster.h"
@@ -185,7 +186,8 @@ int run_render(const RenderArgs& args) {
 Runner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Light every vertex and rasterize with Gouraud shading to an sRGB PNG.");
-  cmd->add_option("input", args->input, "Input asset (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  // A missing input is an input that cannot be read (exit 1, like bake), not a usage error.
+  cmd->add_option("input", args->input, "Input asset: glTF (.gltf, .glb), OBJ, PLY, OFF or STL")->required();
   cmd->add_option("-o,--output", args->output, "Output PNG (FILE.png); written atomically")
       ->required()
       ->check(CLI::Validator(
@@ -202,7 +204,7 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--samples", args->samples, "Samples per pixel for anti-aliasing: 1, 4 (default), 16, 64")
       ->check(CLI::IsMember({1, 4, 9, 16, 25, 36, 49, 64}));
   cmd->add_option("--exposure", args->exposure, "Multiplier applied before sRGB encoding (default 1)")->check(CLI::PositiveNumber);
-  cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
+  add_vector3_option(*cmd, "--background", args->background, "Background color, linear RGB: R,G,B or R G B (default 0,0,0)");
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
   cmd->add_option("--specular", args->specular,
                   "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");

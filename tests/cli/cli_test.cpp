@@ -245,7 +245,7 @@ TEST_CASE("--explain prints the plan and per-stage times") {
   CHECK(render.out.find("plan: specular neighborhood") != std::string::npos);  // not exact: that lights the whole demo for seconds
   CHECK(render.out.find("rasterize") != std::string::npos);
   const auto bad = run_command(kVlit + " render " + q(kDemo) + " -o " + q((dir / "x.png").string()) + " --specular shiny");
-  CHECK(bad.exit_code == 1);
+  CHECK(bad.exit_code == 2);  // a value the option does not allow: a usage error
   CHECK(bad.err.find("--specular: expected peak, neighborhood:K, exact or none") != std::string::npos);
 }
 

@@ -87,7 +87,7 @@ double column_of(double x, double camera_x, int width, double aspect) {
 
 }  // namespace
 
-TEST_CASE("render: the image's aspect wins over the camera's aspectRatio; --camera picks by index, name or auto") {
+TEST_CASE("render: the image's aspect wins over the camera's aspectRatio and --camera picks by index, name or auto") {
   const auto dir = vlit::test::temp_dir("render-camera");
   const std::string scene = write_scene(dir);
   constexpr int kW = 200, kH = 100;

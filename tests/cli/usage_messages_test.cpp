@@ -104,7 +104,7 @@ TEST_CASE("a bake that clips many vertices says so and prints the exposures that
   CHECK(floats.err.find("clipped above 1 at exposure") == std::string::npos);
 }
 
-TEST_CASE("every error is one line 'error: ...'; usage errors exit 2, input errors 1; --help documents the codes") {
+TEST_CASE("every error is one line 'error: ...' - usage errors exit 2, input errors 1, --help documents the codes") {
   const fs::path dir = vlit::test::temp_dir("error-style");
   const std::string out = q((dir / "x.glb").string()), png = q((dir / "x.png").string());
   struct Case {
@@ -182,7 +182,7 @@ TEST_CASE("vectors: 1,2,3 and 1 2 3 are the same for every vector option") {
   CHECK(int(a[2]) == 0);
 }
 
-TEST_CASE("--mode multiply does not warn about what it was asked to do; replace warns that it drops the old colours") {
+TEST_CASE("--mode multiply does not warn about what it was asked to do, replace warns that it drops the old colours") {
   const fs::path dir = vlit::test::temp_dir("mode-warning");
   const std::string demo = std::string(VLIT_SOURCE_DIR) + "/assets/demo/studio.glb";
   const std::string lights = " --lights " + q(std::string(VLIT_SOURCE_DIR) + "/assets/demo/lights.json");

@@ -311,7 +311,7 @@ TEST_CASE("golden: debug views (wireframe over the shading, world normals)") {
   SUBCASE("normals") { check_golden("view-normals", scene, lights, "--view normals"); }
 }
 
-TEST_CASE("golden: the preview of a baked asset (COLOR_0 x base colour, unlit; panels drawn with their radiance)") {
+TEST_CASE("golden: the preview of a baked asset (COLOR_0 x base colour unlit, panels drawn with their radiance)") {
   // The paper's studio baked under its panels, then drawn as a viewer shows it, without lights
   // (the default for an asset with COLOR_0 and no lights) and with the panels drawn (--preview
   // --lights).

@@ -26,6 +26,7 @@
 #include "cli/scene_args.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
+#include "cli/usage_error.h"
 #include "cli/vector_option.h"
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
@@ -158,8 +159,8 @@ int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeF
   std::error_code ec;
   // `-o baked.glb` with several inputs or --shard is a mistake, not a folder to create.
   if (!fs::exists(args.output, ec) && is_gltf_path(args.output))
-    throw InputError(args.output, "a batch (several inputs, a directory, a pattern or --shard) needs -o to be a "
-                                  "directory, not a .glb or .gltf file name");
+    throw UsageError(args.output + ": a batch (several inputs, a directory, a pattern or --shard) needs -o to be a "
+                                   "directory, not a .glb or .gltf file name");
   std::unique_ptr<ManifestWriter> manifest;
   if (!args.manifest.empty()) manifest = std::make_unique<ManifestWriter>(args.manifest);
   if (!fs::exists(args.output, ec)) fs::create_directories(args.output, ec);
@@ -275,7 +276,18 @@ Runner add_bake_command(CLI::App& app) {
                   "I/N: bake only shard I (0 .. N-1) of the batch; the N shards together bake every input once, "
                   "each input's shard set by its path under its argument (docs/batch-sharding.md). auto: from a "
                   "Slurm job array, a Kubernetes Indexed Job (with VLIT_SHARD_COUNT), GNU parallel (PARALLEL_SEQ, "
-                  "with VLIT_SHARD_COUNT) or VLIT_SHARD_INDEX/VLIT_SHARD_COUNT");
+                  "with VLIT_SHARD_COUNT) or VLIT_SHARD_INDEX/VLIT_SHARD_COUNT")
+      ->check(CLI::Validator(
+          [](const std::string& value) {  // I/N checked while parsing: a malformed shard is a usage error
+            if (value == "auto") return std::string();
+            try {
+              parse_shard(value);
+              return std::string();
+            } catch (const InputError& e) {
+              return e.problem();
+            }
+          },
+          "I/N|auto"));
   cmd->add_flag("--skip-existing", args->skip_existing,
                 "Keep an output that is newer than its input and --lights file (to resume a batch); the bake "
                 "options are not compared");

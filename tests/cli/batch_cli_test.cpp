@@ -164,11 +164,11 @@ TEST_CASE("--shard I/N: N shards bake every input exactly once, whatever the ord
   CHECK(k8s.exit_code == 1);
   CHECK(k8s.err.find("set VLIT_SHARD_COUNT") != std::string::npos);
   const auto file_out = run_command(kVlit + " bake " + q(b.dir / "flat") + " -o " + q(b.dir / "one.glb") + " --shard 0/3");
-  CHECK(file_out.exit_code == 1);
+  CHECK(file_out.exit_code == 2);  // usage errors (README "Exit status")
   CHECK(file_out.err.find("needs -o to be a directory, not a .glb or .gltf file name") != std::string::npos);
   CHECK_FALSE(fs::exists(b.dir / "one.glb"));
   const auto bad = run_command(kVlit + " bake " + q(b.dir / "flat") + " -o " + q(b.dir / "bad") + " --shard 3/3");
-  CHECK(bad.exit_code == 1);
+  CHECK(bad.exit_code == 2);
   CHECK(bad.err.find("--shard: shard index 3 is not below the count 3") != std::string::npos);
 }
 

@@ -121,6 +121,10 @@ TEST_CASE("every error is one line 'error: ...' - usage errors exit 2, input err
       {"bake " + q(kBox) + " --specular-eye 0,2,5 --specular sharp -o " + out, 2},
       {"render " + q(kBox) + " --specular neighborhood:0 -o " + png, 2},
       {"render " + q(kBox) + " --background 1,2 -o " + png, 2},
+      {"bake " + q(kBox) + " " + q(kBox) + " -o " + out, 2},               // a batch into a .glb name
+      {"bake " + q(kBox) + " --shard 3/3 -o " + q(dir.string()), 2},        // a shard index beyond the count
+      {"probe --lights " + q(kBox) + " --points " + q(kBox) + " --snap-to-vertices", 2},  // options that need another
+      {"probe --lights " + q(kBox) + " --points " + q(kBox) + " --occluders " + q(kBox) + " --precision float", 2},
       {"bake", 2},                                                          // a missing argument
       {"bake " + q((dir / "missing.glb").string()) + " -o " + out, 1},       // an input that cannot be read
       {"render " + q((dir / "missing.glb").string()) + " -o " + png, 1},

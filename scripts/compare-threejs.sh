@@ -3,7 +3,8 @@
 # with three.js (unlit vertex colours, the asset's camera) in headless Debian Chromium, renders
 # the same scene and lights with `vlit render`, and compares the two images pixel by pixel,
 # without antialiasing (vlit --samples 1 against WebGL without MSAA) and with (vlit --samples 16
-# against WebGL MSAA). Prints one JSON line of statistics per comparison; exits 1 if a comparison
+# against WebGL MSAA); then the preview of the baked asset (`vlit render baked.glb`, no lights:
+# COLOR_0 x base colour unlit, docs/rasterizer.md) against three.js without antialiasing. Prints one JSON line of statistics per comparison; exits 1 if a comparison
 # exceeds the tolerances below (unlit vertex-coloured materials in three.js; at most 0.1% of the
 # interior pixels off by more than 2/255; at most 0.1% (no AA) / 1% (AA) of all pixels off by more
 # than 8/255; PSNR at least 44 / 40 dB), 2 if node, npm or chromium is missing.
@@ -29,6 +30,8 @@ $vlit bake "$scene" --lights "$lights" --color-format "${BAKE_FORMAT:-float}" -o
 common=(--lights "$lights" --specular none --cull-back-faces --width $width --height $height -q)
 $vlit render "$scene" "${common[@]}" --samples 1 -o "$out/vlit.png"
 $vlit render "$scene" "${common[@]}" --samples 16 -o "$out/vlit-16.png"
+mkdir -p "$out/preview"
+$vlit render "$out/baked.glb" --cull-back-faces --width $width --height $height -q --samples 1 -o "$out/preview/vlit.png"
 status=0
 check() {  # check JSON: the tolerances of docs/gltf-output.md
   node -e '
@@ -41,4 +44,5 @@ check() {  # check JSON: the tolerances of docs/gltf-output.md
 }
 check "$(node tests/threejs/compare.mjs --gltf "$out/baked.glb" --vlit "$out/vlit.png" --width $width --height $height --out-dir "$out")"
 check "$(node tests/threejs/compare.mjs --gltf "$out/baked.glb" --vlit "$out/vlit-16.png" --width $width --height $height --out-dir "$out" --antialias)"
+check "$(node tests/threejs/compare.mjs --gltf "$out/baked.glb" --vlit "$out/preview/vlit.png" --width $width --height $height --out-dir "$out/preview")"
 exit $status

@@ -88,9 +88,13 @@ BakeSummary bake(tinygltf::Model& model, const Lights& lights, const BakeSetting
                          "base colour cannot show it (left out)");
     if (const std::string advice = clipping_advice(report, encode.exposure); !advice.empty())
       warnings.push_back(name + ": " + advice);
-    if (report.replaced_attributes > 0)
-      warnings.push_back(name + ": " + (encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") + " the existing " +
-                         encode.target + " of " + std::to_string(report.replaced_attributes) + " primitive(s)");
+    // Multiplying the existing colours is what multiply mode asks for: no warning. Replacing drops them.
+    if (report.replaced_attributes > 0 && encode.mode == BakeMode::kReplace)
+      warnings.push_back(name + ": replaced the existing " + encode.target + " of " +
+                         std::to_string(report.replaced_attributes) + " primitive(s) (--mode multiply keeps them as a factor)");
+    if (report.filled_color_sets > 0)
+      warnings.push_back(name + ": " + std::to_string(report.filled_color_sets) + " lower colour set(s) missing below " +
+                         encode.target + " added in white (glTF requires COLOR_0 .. COLOR_n without gaps)");
     return summary_of(report, scene.lights.size(), std::move(warnings));
   });
 }

@@ -48,7 +48,7 @@ Image render_scene(Scene& scene, const Lights& lights, const RenderSettings& set
     for (const auto& v : p.positions) { lo = min(lo, v); hi = max(hi, v); }
   const double aspect = static_cast<double>(settings.width) / settings.height;
   raster::Camera camera = settings.view   ? camera_of(*settings.view, input)
-                          : scene.camera ? raster::camera_from_scene(*scene.camera)
+                          : !scene.cameras.empty() ? raster::camera_from_scene(scene.cameras.front())
                                          : raster::frame_bounds(lo, hi, aspect);
   if (const std::string problem = raster::validate_camera(camera); !problem.empty()) {
     if (settings.view) throw Error(input, "camera unusable: " + problem, "settings.view");

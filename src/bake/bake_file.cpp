@@ -67,10 +67,16 @@ BakeFileResult bake_file(const std::string& input, const std::string& output, co
                               "base colour cannot show it (left out)");
   if (const std::string advice = clipping_advice(result.report, options.encode.exposure); !advice.empty())
     result.warnings.push_back(input + ": " + advice);
-  if (result.report.replaced_attributes > 0)
-    result.warnings.push_back(input + ": " + (options.encode.mode == BakeMode::kMultiply ? "multiplied" : "replaced") +
-                              " the existing " + options.encode.target + " of " +
-                              std::to_string(result.report.replaced_attributes) + " primitive(s)");
+  // Multiplying the existing colours is what multiply mode asks for: no warning. Replacing drops them.
+  if (result.report.replaced_attributes > 0 && options.encode.mode == BakeMode::kReplace)
+    result.warnings.push_back(input + ": replaced the existing " + options.encode.target + " of " +
+                              std::to_string(result.report.replaced_attributes) +
+                              " primitive(s) (--mode multiply keeps them as a factor)");
+  if (result.report.filled_color_sets > 0)
+    result.warnings.push_back(input + ": " + std::to_string(result.report.filled_color_sets) +
+                              " lower colour set(s) missing below " + options.encode.target +
+                              " added in white (glTF requires COLOR_0 .. COLOR_n without gaps; a viewer's picture is "
+                              "unchanged)");
   t = Clock::now();
   GltfWriteOptions write;
   write.embed_images = options.embed_images;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <stdexcept>
+#include <string>
 
 #include "gltf/accessor_reader.h"
 #include "scene/material.h"
@@ -39,6 +41,16 @@ void append_aligned(std::vector<unsigned char>& data, const void* bytes, std::si
   while (data.size() % 4 != 0) data.push_back(0);
   const auto* b = static_cast<const unsigned char*>(bytes);
   data.insert(data.end(), b, b + n);
+}
+
+// n of COLOR_n, -1 for any other attribute name.
+int color_set_index(const std::string& target) {
+  if (target.rfind("COLOR_", 0) != 0) return -1;
+  try {
+    return std::stoi(target.substr(6));
+  } catch (const std::exception&) {
+    return -1;
+  }
 }
 
 // The base-colour multiplier to store for each vertex of one primitive, RGBA: light x exposure,
@@ -197,6 +209,15 @@ BakeReport bake_vertex_colors(tinygltf::Model& model, const Scene& scene, const 
     tinygltf::Primitive& prim = model.meshes[mesh_of_node.at(sp.node)].primitives[sp.primitive];
     const auto rgba = vertex_multipliers(model, prim, scene, sp, light[i], options, report);
     prim.attributes[options.target] = append_color_accessor(model, buffer, buffer_index, rgba, options, report);
+    // glTF 2.0 section 3.7.2.1: the indices of COLOR_n start at 0 and are consecutive. A bake into
+    // COLOR_n of a primitive that lacks a lower set fills it with white, the multiplier a viewer
+    // assumes when COLOR_0 is absent, so the asset looks as before and stays valid.
+    for (int set = 0; set < color_set_index(options.target); ++set)
+      if (const std::string name = "COLOR_" + std::to_string(set); !prim.attributes.count(name)) {
+        const std::vector<std::array<double, 4>> white(rgba.size(), {1.0, 1.0, 1.0, 1.0});
+        prim.attributes[name] = append_color_accessor(model, buffer, buffer_index, white, options, report);
+        ++report.filled_color_sets;
+      }
     report.vertices += rgba.size();
     if (options.format != ColorFormat::kFloat)
       for (const auto& c : rgba) {

@@ -45,6 +45,9 @@ struct BakeReport {
   double max_quantization_error = 0;    // largest |stored - exact| over unclipped channels
   std::size_t replaced_attributes = 0;  // primitives whose existing target attribute was replaced or multiplied
   std::size_t duplicated_meshes = 0;
+  // Colour sets below the target (COLOR_0 for a bake into COLOR_1, ...) that a primitive lacked,
+  // added in white so the sets stay contiguous as glTF requires (the viewer's picture is unchanged).
+  std::size_t filled_color_sets = 0;
 };
 
 // `light` holds one VertexLight per scene primitive (light_scene_vertices). The scene must have

@@ -4,6 +4,7 @@
 #include <map>
 #include <glob.h>
 
+#include "batch/recursive_glob.h"
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
 #include "mesh/mesh_file.h"
@@ -50,13 +51,18 @@ std::vector<BatchInput> expand_batch_argument(const std::string& arg) {
     if (files.empty()) throw InputError(arg, "directory holds no .gltf, .glb, .obj, .ply, .off or .stl file");
   } else if (!fs::exists(arg, ec) && has_wildcard(arg)) {
     const fs::path root = glob_root(arg);
-    glob_t g{};
-    if (::glob(arg.c_str(), 0, nullptr, &g) == 0)
-      for (std::size_t i = 0; i < g.gl_pathc; ++i) {
-        const fs::path found(g.gl_pathv[i]);
-        if (fs::is_regular_file(found, ec)) files.push_back({found.string(), found.lexically_relative(root).generic_string()});
-      }
-    ::globfree(&g);
+    std::vector<std::string> matches;
+    if (has_recursive_wildcard(arg)) {
+      matches = recursive_glob(arg, root.string());
+    } else {
+      glob_t g{};
+      if (::glob(arg.c_str(), 0, nullptr, &g) == 0) matches.assign(g.gl_pathv, g.gl_pathv + g.gl_pathc);
+      ::globfree(&g);
+    }
+    for (const std::string& match : matches) {
+      const fs::path found(match);
+      if (fs::is_regular_file(found, ec)) files.push_back({found.string(), found.lexically_relative(root).generic_string()});
+    }
     if (files.empty()) throw InputError(arg, "pattern matches no file");
   } else {
     if (!fs::is_regular_file(arg, ec)) throw InputError(arg, "no such file");

@@ -26,6 +26,8 @@
 #include "cli/scene_args.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
+#include "cli/usage_error.h"
+#include "cli/vector_option.h"
 #include "core/input_error.h"
 #include "gltf/gltf_file.h"
 #include "gltf/gltf_scene.h"
@@ -43,7 +45,7 @@ struct BakeArgs {
   std::string color_format = "unorm16";
   std::string mode = "replace";
   std::string target = "COLOR_0";
-  std::string specular_eye;        // "x,y,z" or empty
+  std::vector<double> specular_eye;  // three numbers, or empty
   std::string specular = "peak";
   double exposure = 1;
   bool no_unlit = false;
@@ -55,29 +57,9 @@ struct BakeArgs {
   std::string manifest;            // JSON lines, appended; empty: none
 };
 
-// "x,y,z": three finite numbers separated by commas.
-Vec3d parse_eye(const std::string& text) {
-  double c[3];
-  std::size_t at = 0;
-  for (int i = 0; i < 3; ++i) {
-    const std::size_t end = i < 2 ? text.find(',', at) : text.size();
-    if (end == std::string::npos) throw InputError("--specular-eye", "expected x,y,z, got \"" + text + "\"");
-    const std::string part = text.substr(at, end - at);
-    try {
-      std::size_t used = 0;
-      c[i] = std::stod(part, &used);
-      if (used != part.size() || !std::isfinite(c[i])) throw std::invalid_argument(part);
-    } catch (const std::exception&) {
-      throw InputError("--specular-eye", "expected x,y,z with three finite numbers, got \"" + text + "\"");
-    }
-    at = end + 1;
-  }
-  return {c[0], c[1], c[2]};
-}
-
 BakeFileOptions file_options(const BakeArgs& args) {
   BakeFileOptions o;
-  if (!args.specular_eye.empty()) o.specular_eye = parse_eye(args.specular_eye);
+  if (!args.specular_eye.empty()) o.specular_eye = Vec3d{args.specular_eye[0], args.specular_eye[1], args.specular_eye[2]};
   o.specular = parse_specular(args.specular);
   o.lights_path = args.scene.lights;
   o.use_file_lights = !args.scene.no_file_lights;
@@ -179,8 +161,8 @@ int run_batch(const BakeArgs& args, const std::vector<BatchInput>& inputs, BakeF
   std::error_code ec;
   // `-o baked.glb` with several inputs or --shard is a mistake, not a folder to create.
   if (!fs::exists(args.output, ec) && is_gltf_path(args.output))
-    throw InputError(args.output, "a batch (several inputs, a directory, a pattern or --shard) needs -o to be a "
-                                  "directory, not a .glb or .gltf file name");
+    throw UsageError(args.output + ": a batch (several inputs, a directory, a pattern or --shard) needs -o to be a "
+                                   "directory, not a .glb or .gltf file name");
   std::unique_ptr<ManifestWriter> manifest;
   if (!args.manifest.empty()) manifest = std::make_unique<ManifestWriter>(args.manifest);
   if (!fs::exists(args.output, ec)) fs::create_directories(args.output, ec);
@@ -282,9 +264,9 @@ Runner add_bake_command(CLI::App& app) {
       ->check(CLI::IsMember({"unorm16", "unorm8", "float"}));
   cmd->add_option("--exposure", args->exposure, "Multiplier applied to the light before encoding (default 1)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--specular-eye", args->specular_eye,
-                  "Also bake specular light seen from this world-space eye, x,y,z (off by default); it is folded into "
-                  "the multiplier of the base color (docs/gltf-output.md)");
+  add_vector3_option(*cmd, "--specular-eye", args->specular_eye,
+                     "Also bake specular light seen from this world-space eye, x,y,z or x y z (off by default); it is "
+                     "folded into the multiplier of the base color (docs/gltf-output.md)");
   cmd->add_option("--specular", args->specular,
                   "Specular method of linear and area lights with --specular-eye: peak (default), neighborhood:K, exact");
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
@@ -299,7 +281,18 @@ Runner add_bake_command(CLI::App& app) {
                   "I/N: bake only shard I (0 .. N-1) of the batch; the N shards together bake every input once, "
                   "each input's shard set by its path under its argument (docs/batch-sharding.md). auto: from a "
                   "Slurm job array, a Kubernetes Indexed Job (with VLIT_SHARD_COUNT), GNU parallel (PARALLEL_SEQ, "
-                  "with VLIT_SHARD_COUNT) or VLIT_SHARD_INDEX/VLIT_SHARD_COUNT");
+                  "with VLIT_SHARD_COUNT) or VLIT_SHARD_INDEX/VLIT_SHARD_COUNT")
+      ->check(CLI::Validator(
+          [](const std::string& value) {  // I/N checked while parsing: a malformed shard is a usage error
+            if (value == "auto") return std::string();
+            try {
+              parse_shard(value);
+              return std::string();
+            } catch (const InputError& e) {
+              return e.problem();
+            }
+          },
+          "I/N|auto"));
   cmd->add_flag("--skip-existing", args->skip_existing,
                 "Keep an output that is newer than its input and --lights file (to resume a batch); the bake "
                 "options are not compared");

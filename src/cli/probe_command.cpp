@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "cli/usage_error.h"
 #include "cli/specular_option.h"
 #include "core/input_error.h"
 #include "io/lights_json.h"
@@ -49,14 +50,15 @@ int run_probe(const ProbeArgs& args) {
   ShadeOptions options;
   options.specular = parse_specular(args.specular);
   options.with_specular = options.specular.method != SpecularMethod::kNone;
+  // Options that do not go together: usage errors, before anything is read.
+  if (args.snap_to_vertices && args.occluders.empty())
+    throw UsageError(args.points + ": --snap-to-vertices needs --occluders (the vertices are theirs)");
+  if (!args.occluders.empty() && args.precision == "float")
+    throw UsageError(args.occluders + ": --occluders needs --precision double (shadows are computed in double)");
   const auto lights = read_lights_json(args.lights);
   auto points = read_points_csv(args.points);
-  if (args.snap_to_vertices && args.occluders.empty())
-    throw InputError(args.points, "--snap-to-vertices needs --occluders (the vertices are theirs)");
   std::optional<OccluderBvh> occluders;
   if (!args.occluders.empty()) {
-    if (args.precision == "float")
-      throw InputError(args.occluders, "--occluders needs --precision double (shadows are computed in double)");
     LoadedScene scene = load_scene(args.occluders, "", {SceneLimits{}, false});
     OccluderTriangles triangles = occluders_of(scene.scene);
     if (args.snap_to_vertices) {

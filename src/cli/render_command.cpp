@@ -1,19 +1,24 @@
 // vlit render IN --lights LIGHTS.json -o OUT.png [--width W --height H] [--samples N] ...
 // Lights every vertex (diffuse and specular towards the camera), then rasterizes with Gouraud
 // shading: vertex colour = kd x diffuse light + ks x specular light.
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
+#include "bake/emitter_draw_meshes.h"
 #include "bake/light_vertices.h"
 #include "bake/lit_draw_mesh.h"
+#include "bake/preview_draw_mesh.h"
+#include "cli/camera_option.h"
 #include "cli/commands.h"
 #include "cli/openmp_wait_policy.h"
 #include "cli/scene_args.h"
 #include "cli/specular_option.h"
 #include "cli/terminal.h"
+#include "cli/vector_option.h"
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
 #include "raster/raster.h"
@@ -31,8 +36,10 @@ struct RenderArgs {
   std::vector<double> background{0, 0, 0};
   bool cull_back_faces = false;
   bool quiet = false;
+  bool preview = false;
   std::string specular = "peak";
   std::string view = "shaded";
+  std::string camera;  // --camera: empty = the file's first camera
   double wire_width = raster::WireframeOptions{}.width;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
 };
@@ -69,13 +76,25 @@ int run_render(const RenderArgs& args) {
     throw InputError(args.output, std::to_string(args.width) + " x " + std::to_string(args.height) +
                                       " pixels exceed the limit of " + std::to_string(args.max_pixels) +
                                       " (raise it with --max-pixels)");
-  LoadedScene loaded = load_scene(args.input, args.scene.lights, args.scene.scene_options());
+  SceneOptions scene_options = args.scene.scene_options();
+  scene_options.vertex_colors = args.view != "normals";  // COLOR_0, for the preview
+  LoadedScene loaded = load_scene(args.input, args.scene.lights, scene_options);
   for (const auto& w : loaded.warnings) print_warning(w);
   loaded.gltf.reset();  // the glTF document (with its buffers) is for bake's output, not needed here
   const Scene& scene = loaded.scene;
   const double load_seconds = since(t);
   const bool normals_view = args.view == "normals";
-  if (scene.lights.empty() && !normals_view) print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
+  const bool has_colors = std::any_of(scene.primitives.begin(), scene.primitives.end(),
+                                      [](const ScenePrimitive& p) { return !p.colors.empty(); });
+  // A baked asset without lights (none in the file, no --lights) is previewed as a viewer shows it.
+  const bool preview = !normals_view && (args.preview || (scene.lights.empty() && has_colors));
+  if (preview && !args.preview && !args.quiet)
+    std::fprintf(stderr, "%s: no lights, and COLOR_0: drawing COLOR_0 x base colour unlit, as a glTF viewer shows a baked "
+                 "asset (--preview; pass --lights LIGHTS.json to light it)\n", args.input.c_str());
+  if (preview && std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.base_color_texture; }))
+    print_warning(args.input + ": base colour textures are not sampled; the preview shows COLOR_0 x baseColorFactor");
+  if (scene.lights.empty() && !normals_view && !preview)
+    print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
 
   raster::RenderOptions options;
   options.width = args.width;
@@ -93,7 +112,8 @@ int run_render(const RenderArgs& args) {
   for (const auto& p : scene.primitives)
     for (const auto& v : p.positions) { lo = min(lo, v); hi = max(hi, v); }
   const double aspect = static_cast<double>(args.width) / args.height;
-  raster::Camera camera = scene.camera ? raster::camera_from_scene(*scene.camera) : raster::frame_bounds(lo, hi, aspect);
+  const std::optional<SceneCamera> chosen = choose_camera(scene, args.camera, args.input);
+  raster::Camera camera = chosen ? raster::camera_from_scene(*chosen) : raster::frame_bounds(lo, hi, aspect);
   if (const std::string problem = raster::validate_camera(camera); !problem.empty()) {
     print_warning(args.input + ": camera unusable (" + problem + "); framing the scene instead");
     camera = raster::frame_bounds(lo, hi, aspect);
@@ -104,6 +124,10 @@ int run_render(const RenderArgs& args) {
   std::vector<raster::DrawMesh> meshes;
   if (normals_view) {
     meshes = normal_view_meshes(loaded.scene);
+  } else if (preview) {
+    for (ScenePrimitive& prim : loaded.scene.primitives)
+      meshes.push_back(preview_draw_mesh(prim, scene.material_of(prim), std::move(prim.triangles)));
+    for (raster::DrawMesh& mesh : emitter_draw_meshes(scene.lights, camera, args.height)) meshes.push_back(std::move(mesh));
   } else {
     Progress progress("lighting", args.input, !args.quiet);
     LightingRequest request;
@@ -127,10 +151,11 @@ int run_render(const RenderArgs& args) {
   }
   // The scene's geometry is not needed any more: free it before rasterizing, where a large render
   // peaks (docs/rasterizer.md, memory).
-  const std::string plan_text = args.scene.explain && plan ? describe(*plan, scene) : std::string("plan: none (normals view)\n");
+  const std::string plan_text = args.scene.explain && plan ? describe(*plan, scene) : std::string(preview ? "plan: none (preview, unlit)\n" : "plan: none (normals view)\n");
   for (ScenePrimitive& prim : loaded.scene.primitives) {
     std::vector<Vec3d>().swap(prim.positions);
     std::vector<Vec3d>().swap(prim.normals);
+    std::vector<Vec3f>().swap(prim.colors);
   }
   t = Clock::now();
   raster::RenderWorkspace workspace;
@@ -161,7 +186,8 @@ int run_render(const RenderArgs& args) {
 Runner add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand("render", "Light every vertex and rasterize with Gouraud shading to an sRGB PNG.");
-  cmd->add_option("input", args->input, "Input asset (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  // A missing input is an input that cannot be read (exit 1, like bake), not a usage error.
+  cmd->add_option("input", args->input, "Input asset: glTF (.gltf, .glb), OBJ, PLY, OFF or STL")->required();
   cmd->add_option("-o,--output", args->output, "Output PNG (FILE.png); written atomically")
       ->required()
       ->check(CLI::Validator(
@@ -178,7 +204,7 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--samples", args->samples, "Samples per pixel for anti-aliasing: 1, 4 (default), 16, 64")
       ->check(CLI::IsMember({1, 4, 9, 16, 25, 36, 49, 64}));
   cmd->add_option("--exposure", args->exposure, "Multiplier applied before sRGB encoding (default 1)")->check(CLI::PositiveNumber);
-  cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
+  add_vector3_option(*cmd, "--background", args->background, "Background color, linear RGB: R,G,B or R G B (default 0,0,0)");
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
   cmd->add_option("--specular", args->specular,
                   "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
@@ -189,10 +215,20 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--wire-width", args->wire_width,
                   "Wireframe view: line width in pixels on each side of a shared edge (default 0.5)")
       ->check(CLI::Range(0.01, 64.0));
+  cmd->add_flag("--preview", args->preview,
+                "Draw what a glTF viewer shows for a baked, unlit asset: COLOR_0 x base colour (textures not "
+                "sampled) plus emission, no lighting; panels, disks and tubes drawn with their own radiance. The "
+                "default when the scene has no lights and has COLOR_0");
+  cmd->add_option("--camera", args->camera,
+                  "The glTF camera to draw from: its index in the file's cameras, its name, or auto (a 3/4 view "
+                  "framing the scene, whatever the file has); default: the file's first camera, else auto")
+      ->type_name("INDEX|NAME|auto");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress or summary on stderr");
   cmd->add_option("--max-pixels", args->max_pixels, "Refuse an image larger than this many pixels (default 67108864)")
       ->check(CLI::PositiveNumber);
-  cmd->footer("The camera is the glTF's first camera if it has one, otherwise a 3/4 view framing the whole scene.");
+  cmd->footer("The camera is the glTF's first camera if it has one (or --camera), otherwise a 3/4 view framing the\n"
+              "whole scene. The image's aspect (--width / --height) wins over the camera's aspectRatio: the vertical\n"
+              "field of view is kept and the horizontal one follows the image, as in three.js.");
   return [args] { return run_render(*args); };
 }
 

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "core/input_error.h"
+#include "cli/usage_error.h"
 
 namespace vlit::cli {
 
@@ -19,10 +19,10 @@ SpecularOptions parse_specular(const std::string& text) {
       s.neighborhood_samples = std::stoi(k, &used);
       if (used != k.size() || s.neighborhood_samples < 1 || s.neighborhood_samples > 1024) throw std::invalid_argument(k);
     } catch (const std::exception&) {
-      throw InputError("--specular", "neighborhood:K needs an integer K in [1, 1024], got \"" + k + "\"");
+      throw UsageError("--specular: neighborhood:K needs an integer K in [1, 1024], got \"" + k + "\"");
     }
   } else {
-    throw InputError("--specular", "expected peak, neighborhood:K, exact or none, got \"" + text + "\"");
+    throw UsageError("--specular: expected peak, neighborhood:K, exact or none, got \"" + text + "\"");
   }
   return s;
 }

@@ -65,6 +65,7 @@ std::string limit_message(const char* what, std::size_t limit) {
 struct BuildState {
   explicit BuildState(const SceneLimits& limits) : emissive_lights(limits.max_emissive_lights) {}
   bool file_lights = true;
+  bool vertex_colors = false;
   std::size_t vertices_so_far = 0, corners_so_far = 0;
   EmissiveLightSet emissive_lights;
 };
@@ -75,6 +76,27 @@ bool is_line_mode(int mode) {
 
 const Material* material_at(const Scene& scene, int index) {
   return index >= 0 && static_cast<std::size_t>(index) < scene.materials.size() ? &scene.materials[index] : nullptr;
+}
+
+// COLOR_0 (VEC3 or VEC4; float, or normalized unsigned byte or short) as linear RGB, alpha dropped.
+std::vector<Vec3f> read_vertex_colors(const GltfFile& file, int accessor, std::size_t vertex_count, const std::string& where) {
+  const tinygltf::Model& model = file.model;
+  if (accessor < 0 || static_cast<std::size_t>(accessor) >= model.accessors.size())
+    throw InputError(file.path, "COLOR_0 accessor " + std::to_string(accessor) + " does not exist", where);
+  const tinygltf::Accessor& acc = model.accessors[accessor];
+  const int components = acc.type == TINYGLTF_TYPE_VEC3 ? 3 : acc.type == TINYGLTF_TYPE_VEC4 ? 4 : 0;
+  if (components == 0) throw InputError(file.path, "COLOR_0 must be a VEC3 or VEC4 accessor", where);
+  // Compare counts before reading (an accessor without a bufferView could be huge).
+  if (acc.count != vertex_count) throw InputError(file.path, "COLOR_0 and POSITION counts differ", where);
+  const std::vector<double> values = read_accessor_as_doubles(model, accessor, file.path);
+  if (values.size() != vertex_count * components) throw InputError(file.path, "COLOR_0 and POSITION counts differ", where);
+  std::vector<Vec3f> colors(vertex_count);
+  for (std::size_t i = 0; i < vertex_count; ++i) {
+    const double* c = &values[i * components];
+    colors[i] = static_cast<Vec3f>(Vec3d{c[0], c[1], c[2]});
+    if (!is_finite(colors[i])) colors[i] = {0, 0, 0};
+  }
+  return colors;
 }
 
 // An emissive LINES / LINE_STRIP / LINE_LOOP primitive: one linear light per segment.
@@ -204,6 +226,8 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
   } else {
     out.normals = angle_weighted_normals(out.positions, out.triangles);
   }
+  if (const auto color_it = prim.attributes.find("COLOR_0"); state.vertex_colors && color_it != prim.attributes.end())
+    out.colors = read_vertex_colors(file, color_it->second, vertex_count, where);
   // A vertex whose position was not finite sits at the origin with a zero normal: every light
   // model gives zero for a zero normal, so it receives no light, as the warning says.
   for (std::size_t i = 0; i < bad.size(); ++i)
@@ -234,6 +258,7 @@ Material read_material(const GltfFile& file, std::size_t index, std::vector<std:
                        "the material is not used as a light");
   const auto& f = m.pbrMetallicRoughness.baseColorFactor;
   if (f.size() >= 3) out.base_color = {f[0], f[1], f[2]};
+  out.base_color_texture = m.pbrMetallicRoughness.baseColorTexture.index >= 0;
   out.metallic = m.pbrMetallicRoughness.metallicFactor;
   out.roughness = m.pbrMetallicRoughness.roughnessFactor;
   out.double_sided = m.doubleSided;
@@ -337,6 +362,7 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
   const SceneLimits& limits = options.limits;
   BuildState state(limits);
   state.file_lights = file_lights;
+  state.vertex_colors = options.vertex_colors;
   Scene scene;
   for (std::size_t m = 0; m < model.materials.size(); ++m) scene.materials.push_back(read_material(file, m, warnings));
   std::vector<AreaLightDefinition> area_lights;
@@ -384,8 +410,13 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
       for (std::size_t p = 0; p < model.meshes[node.mesh].primitives.size(); ++p)
         read_primitive(file, index, node.mesh, static_cast<int>(p), world, scene, warnings, limits, state);
     }
-    if (node.camera >= 0 && static_cast<std::size_t>(node.camera) < model.cameras.size() && !scene.camera)
-      scene.camera = read_camera(model.cameras[node.camera], world);
+    if (node.camera >= 0 && static_cast<std::size_t>(node.camera) < model.cameras.size() &&
+        std::none_of(scene.cameras.begin(), scene.cameras.end(), [&](const SceneCamera& c) { return c.index == node.camera; }))
+      if (auto camera = read_camera(model.cameras[node.camera], world)) {
+        camera->index = node.camera;
+        camera->name = model.cameras[node.camera].name.empty() ? node.name : model.cameras[node.camera].name;
+        scene.cameras.push_back(std::move(*camera));
+      }
     if (file_lights && node.extensions.count(kExtLightsArea))
       if (auto light = place_area_light(file, area_lights, index, world, warnings)) scene.lights.push_back(*light);
     if (file_lights && node.extensions.count(kVlitLightsLinear))

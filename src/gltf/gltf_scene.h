@@ -34,6 +34,9 @@ struct SceneOptions {
   // false ignores every light of the file (KHR_lights_punctual, EXT_lights_area,
   // VLIT_lights_linear, emissive geometry) without reading it; emissive lines are then skipped.
   bool file_lights = true;
+  // true reads each primitive's COLOR_0 into ScenePrimitive::colors (render's preview of a baked
+  // asset); the bake does not need it.
+  bool vertex_colors = false;
 };
 
 // Throws InputError for a malformed asset (bad accessors, indices out of range, node cycles,

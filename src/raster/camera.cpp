@@ -24,8 +24,6 @@ std::string validate_camera(const Camera& camera) {
     if (!(finite(camera.yfov) && camera.yfov > 0 && camera.yfov < std::numbers::pi))
       return "perspective camera needs yfov in (0, pi) radians";
     if (!(finite(camera.znear) && camera.znear > 0)) return "perspective camera needs znear > 0";
-    if (camera.aspect && !(finite(*camera.aspect) && *camera.aspect > 0))
-      return "camera aspect ratio must be positive";
   }
   return {};
 }
@@ -35,10 +33,8 @@ std::optional<Mat4d> clip_from_world(const Camera& camera, double image_aspect) 
   if (!camera_from_world) return std::nullopt;
   const Mat4d clip_from_camera =
       camera.orthographic
-          ? orthographic_gltf(camera.xmag, camera.ymag, camera.znear,
-                              camera.zfar.value_or(camera.znear + 1.0))
-          : perspective_gltf(camera.aspect.value_or(image_aspect), camera.yfov, camera.znear,
-                             camera.zfar);
+          ? orthographic_gltf(camera.xmag, camera.ymag, camera.znear, camera.zfar.value_or(camera.znear + 1.0))
+          : perspective_gltf(image_aspect, camera.yfov, camera.znear, camera.zfar);
   return clip_from_camera * *camera_from_world;
 }
 
@@ -51,9 +47,8 @@ Camera frame_bounds(const Vec3d& lo, const Vec3d& hi, double aspect) {
 
   Camera camera;
   camera.yfov = 0.8;
-  if (std::isfinite(aspect) && aspect > 0) camera.aspect = aspect;
   const double tan_v = std::tan(0.5 * camera.yfov);
-  const double tan_h = tan_v * camera.aspect.value_or(1.0);
+  const double tan_h = tan_v * (std::isfinite(aspect) && aspect > 0 ? aspect : 1.0);
   constexpr double kFill = 0.9;  // the box spans at most 90% of the width or height
 
   // Orientation first (from +X, +Y, +Z of the centre, looking down ~25 degrees), then the

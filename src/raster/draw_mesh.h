@@ -16,6 +16,9 @@ struct DrawMesh {
   // Counter-clockwise (as seen by the camera, glTF) is the front face. The glTF loader flips the
   // winding of nodes whose world transform has a negative determinant before handing meshes over.
   bool double_sided = true;       // a double-sided mesh is never culled
+  // Back faces culled whatever RenderOptions::cull_back_faces says (the back of a one-sided
+  // emitter, drawn separately in its own colour).
+  bool always_cull_back_faces = false;
 };
 
 }  // namespace vlit::raster

@@ -116,7 +116,7 @@ void setup_meshes(const std::vector<DrawMesh>& meshes, const Mat4d& clip_from_wo
   flags.resize(total_vertices);
   size_t base = 0;
   for (const DrawMesh& mesh : meshes) {
-    const bool cull = options.cull_back_faces && !mesh.double_sided;
+    const bool cull = mesh.always_cull_back_faces || (options.cull_back_faces && !mesh.double_sided);
     const long long vertex_count = (long long)mesh.positions.size();
     // Small loops stay on the calling thread: waking the team costs more than the work (and,
     // on a loaded machine, a scheduler latency).

@@ -16,7 +16,6 @@ Camera camera_from_scene(const SceneCamera& c) {
   Camera out = camera_from_frame(c.position, c.right, c.up, c.back);
   out.orthographic = c.orthographic;
   out.yfov = c.yfov;
-  out.aspect = c.aspect;
   out.xmag = c.xmag;
   out.ymag = c.ymag;
   out.znear = c.znear;

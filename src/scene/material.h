@@ -10,6 +10,7 @@ namespace vlit {
 struct Material {
   std::string name;           // the file's name for it (glTF name, OBJ usemtl), for messages and output
   Vec3d base_color{1, 1, 1};  // linear RGB (glTF baseColorFactor, alpha ignored)
+  bool base_color_texture = false;  // the glTF has a baseColorTexture (vlit does not sample textures)
   double metallic = 1;        // glTF defaults
   double roughness = 1;
   bool double_sided = false;

@@ -1,5 +1,5 @@
 // The scene as the lighting and the rasterizer see it: world-space triangle meshes (one per glTF
-// primitive instance), their materials, the lights and an optional camera. Built by the loaders
+// primitive instance), their materials, the lights and the cameras. Built by the loaders
 // in src/gltf/ and src/io/, read by src/bake/ and src/raster/.
 #pragma once
 
@@ -24,15 +24,20 @@ struct ScenePrimitive {
   std::vector<Vec3d> normals;         // world space, unit length
   std::vector<std::uint32_t> triangles;  // 3 indices per triangle, counter-clockwise front faces
   int material = -1;                  // index into Scene::materials, -1 = default material
+  // glTF COLOR_0 as linear RGB (alpha dropped), one per vertex; read only when asked for
+  // (SceneOptions::vertex_colors), else empty, as for a primitive without COLOR_0.
+  std::vector<Vec3f> colors;
 };
 
 // A camera mirroring glTF 2.0's: looks down its local -Z with +Y up.
 struct SceneCamera {
+  int index = -1;    // glTF cameras[index]
+  std::string name;  // the camera's name, else its node's name, else empty
   Vec3d position;
   Vec3d right{1, 0, 0}, up{0, 1, 0}, back{0, 0, 1};  // world-space camera axes (unit, orthogonal)
   bool orthographic = false;
   double yfov = 0.8;
-  std::optional<double> aspect;
+  std::optional<double> aspect;  // the file's aspectRatio (the image's aspect wins when rendering)
   double xmag = 1, ymag = 1;
   double znear = 0.01;
   std::optional<double> zfar;
@@ -42,7 +47,9 @@ struct Scene {
   std::vector<ScenePrimitive> primitives;
   std::vector<Material> materials;
   std::vector<LightSource> lights;
-  std::optional<SceneCamera> camera;
+  // The first node instance of each usable camera, in the order the default scene's nodes are
+  // visited (depth first, file order): cameras.front() is "the file's first camera".
+  std::vector<SceneCamera> cameras;
 
   const Material& material_of(const ScenePrimitive& p) const {
     static const Material kDefault{};

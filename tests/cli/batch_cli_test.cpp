@@ -164,11 +164,11 @@ TEST_CASE("--shard I/N: N shards bake every input exactly once, whatever the ord
   CHECK(k8s.exit_code == 1);
   CHECK(k8s.err.find("set VLIT_SHARD_COUNT") != std::string::npos);
   const auto file_out = run_command(kVlit + " bake " + q(b.dir / "flat") + " -o " + q(b.dir / "one.glb") + " --shard 0/3");
-  CHECK(file_out.exit_code == 1);
+  CHECK(file_out.exit_code == 2);  // usage errors (README "Exit status")
   CHECK(file_out.err.find("needs -o to be a directory, not a .glb or .gltf file name") != std::string::npos);
   CHECK_FALSE(fs::exists(b.dir / "one.glb"));
   const auto bad = run_command(kVlit + " bake " + q(b.dir / "flat") + " -o " + q(b.dir / "bad") + " --shard 3/3");
-  CHECK(bad.exit_code == 1);
+  CHECK(bad.exit_code == 2);
   CHECK(bad.err.find("--shard: shard index 3 is not below the count 3") != std::string::npos);
 }
 
@@ -287,4 +287,34 @@ TEST_CASE("a folder of mesh files is a batch, x.obj next to x.glb is a collision
   CHECK(clash.err.find((b.dir / "out2/tri.glb").string() + " <- " + (meshes / "tri.glb").string() + ", " +
                        (meshes / "tri.obj").string()) != std::string::npos);
   CHECK_FALSE(fs::exists(b.dir / "out2"));
+}
+
+TEST_CASE("batch: a ** glob matches at any depth (zero or more folders), * stays within one folder") {
+  const SmallBatch b = make_batch("cli-globstar", 8);  // in/setS/glTF[-Quantized]/assetK.glb
+  // One more at the root of the pattern (** matches zero folders) and one in a hidden folder.
+  fs::copy_file(b.in / b.keys[0], b.in / "top.glb");
+  fs::create_directories(b.in / ".cache");
+  fs::copy_file(b.in / b.keys[0], b.in / ".cache" / "hidden.glb");
+  const auto out = b.dir / "out";
+  const auto r = run_command(kVlit + " bake " + q((b.in / "**/*.glb").string()) + " --lights " + q(b.lights) + " -q -o " + q(out));
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  std::set<std::string> expected(b.keys.begin(), b.keys.end());
+  expected.insert("top.glb");
+  CHECK(files_under(out) == expected);
+  // ** in the middle: every asset0 below set1, whatever the folders between.
+  const auto middle = b.dir / "middle";
+  const auto m = run_command(kVlit + " bake " + q((b.in / "set1/**/asset0.glb").string()) + " --lights " + q(b.lights) +
+                             " -q -o " + q(middle));
+  REQUIRE_MESSAGE(m.exit_code == 0, m.err);
+  CHECK(files_under(middle) == std::set<std::string>{"glTF-Quantized/asset0.glb", "glTF/asset0.glb"});
+  // Without **, * does not cross a folder: nothing matches at the top level but top.glb.
+  const auto flat = b.dir / "flat";
+  const auto f = run_command(kVlit + " bake " + q((b.in / "*.glb").string()) + " --lights " + q(b.lights) + " -q -o " + q(flat));
+  REQUIRE_MESSAGE(f.exit_code == 0, f.err);
+  CHECK(files_under(flat) == std::set<std::string>{"top.glb"});
+  const auto none = run_command(kVlit + " bake " + q((b.in / "**/*.obj").string()) + " --lights " + q(b.lights) + " -o " +
+                                q(b.dir / "none"));
+  CHECK(none.exit_code == 1);
+  CHECK(none.err.find("pattern matches no file") != std::string::npos);
+  fs::remove_all(b.dir);
 }

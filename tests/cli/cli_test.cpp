@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include <stb_image.h>
@@ -244,7 +245,7 @@ TEST_CASE("--explain prints the plan and per-stage times") {
   CHECK(render.out.find("plan: specular neighborhood") != std::string::npos);  // not exact: that lights the whole demo for seconds
   CHECK(render.out.find("rasterize") != std::string::npos);
   const auto bad = run_command(kVlit + " render " + q(kDemo) + " -o " + q((dir / "x.png").string()) + " --specular shiny");
-  CHECK(bad.exit_code == 1);
+  CHECK(bad.exit_code == 2);  // a value the option does not allow: a usage error
   CHECK(bad.err.find("--specular: expected peak, neighborhood:K, exact or none") != std::string::npos);
 }
 
@@ -334,4 +335,45 @@ TEST_CASE("--target accepts COLOR_n or an application-specific _NAME, anything e
   // Other usage errors exit 2 as well (README "Exit status").
   CHECK(run_command(kVlit + " bake " + q(kDemo) + " -o " + q((dir / "x.glb").string()) + " --mode sideways").exit_code == 2);
   CHECK(run_command(kVlit + " bake").exit_code == 2);
+}
+
+TEST_CASE("--target COLOR_n on a primitive without the lower colour sets adds them in white (no gap, valid glTF)") {
+  const auto dir = vlit::test::temp_dir("cli-target-gap");
+  const std::string box = kSource + "/assets/samples/Box/Box.gltf";
+  REQUIRE_MESSAGE(std::filesystem::exists(box), "missing test data: " << box);
+  const std::string lights = (dir / "lights.json").string();
+  std::ofstream(lights) << R"({"lights": [{"type": "point", "position": [1, 2, 3], "intensity": 8}]})";
+  const GltfFile input = load_gltf_file(box);
+  for (const auto& mesh : input.model.meshes)
+    for (const auto& prim : mesh.primitives) REQUIRE(prim.attributes.count("COLOR_0") == 0);
+
+  const std::string out = (dir / "box.glb").string();
+  const auto r = run_command(kVlit + " bake " + q(box) + " --lights " + q(lights) + " --target COLOR_2 --color-format float -q -o " +
+                             q(out));
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  CHECK(r.err.find("added in white") != std::string::npos);
+  const GltfFile baked = load_gltf_file(out);
+  std::size_t primitives = 0;
+  for (const auto& mesh : baked.model.meshes)
+    for (const auto& prim : mesh.primitives) {
+      ++primitives;
+      const std::size_t vertices = baked.model.accessors[prim.attributes.at("POSITION")].count;
+      for (const std::string set : {"COLOR_0", "COLOR_1"}) {
+        CAPTURE(set);
+        REQUIRE(prim.attributes.count(set) == 1);
+        const std::vector<double> values = read_accessor_as_doubles(baked.model, prim.attributes.at(set), out);
+        CHECK(values.size() >= 3 * vertices);
+        CHECK(std::all_of(values.begin(), values.end(), [](double v) { return v == 1.0; }));
+      }
+      REQUIRE(prim.attributes.count("COLOR_2") == 1);
+      const std::vector<double> light = read_accessor_as_doubles(baked.model, prim.attributes.at("COLOR_2"), out);
+      CHECK(std::any_of(light.begin(), light.end(), [](double v) { return v != 1.0; }));  // the light, not white
+    }
+  CHECK(primitives > 0);
+  // An application-specific attribute needs no colour set below it.
+  const std::string custom = (dir / "custom.glb").string();
+  REQUIRE(run_command(kVlit + " bake " + q(box) + " --lights " + q(lights) + " --target _LIGHT -q -o " + q(custom)).exit_code == 0);
+  for (const auto& mesh : load_gltf_file(custom).model.meshes)
+    for (const auto& prim : mesh.primitives) CHECK(prim.attributes.count("COLOR_0") == 0);
+  std::filesystem::remove_all(dir);
 }

@@ -3,9 +3,14 @@
 // vertices prints the exposure that would fit them (checked by baking again with it).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <filesystem>
 #include <regex>
+
+#include <stb_image.h>
 
 #include "support/gltf_builder.h"
 #include "support/run_command.h"
@@ -58,7 +63,7 @@ TEST_CASE("a mistyped option or command is answered with the nearest real one") 
   CHECK(swapped.err.find("(did you mean --exposure?)") != std::string::npos);
   const auto command = run_command(kVlit + " bkae " + q(kBox) + " -o " + out);
   CHECK(command.exit_code == 2);
-  CHECK(command.err.find("Unknown command \"bkae\" (did you mean bake?)") != std::string::npos);
+  CHECK(command.err.find("error: unknown command \"bkae\" (did you mean bake?)") != std::string::npos);
   const auto far = run_command(kVlit + " bake " + q(kBox) + " --zzzzzz -o " + out);
   CHECK(far.exit_code == 2);
   CHECK(far.err.find("did you mean") == std::string::npos);  // nothing is near: no guess
@@ -97,4 +102,104 @@ TEST_CASE("a bake that clips many vertices says so and prints the exposures that
   CHECK(box.err.find("clipped above 1 at exposure") == std::string::npos);
   const auto floats = run_command(kVlit + " bake " + q(kLamp) + " --color-format float -o " + q((dir / "f.glb").string()));
   CHECK(floats.err.find("clipped above 1 at exposure") == std::string::npos);
+}
+
+TEST_CASE("every error is one line 'error: ...' - usage errors exit 2, input errors 1, --help documents the codes") {
+  const fs::path dir = vlit::test::temp_dir("error-style");
+  const std::string out = q((dir / "x.glb").string()), png = q((dir / "x.png").string());
+  struct Case {
+    std::string args;
+    int exit_code;
+  };
+  const std::vector<Case> cases = {
+      {"bake " + q(kBox) + " --light l.json -o " + out, 2},                 // unknown option
+      {"bkae " + q(kBox) + " -o " + out, 2},                                // unknown command
+      {"bake " + q(kBox) + " --mode sideways -o " + out, 2},                // a value the option does not allow
+      {"bake " + q(kBox) + " --specular-eye 1,2 -o " + out, 2},             // two numbers for a vector
+      {"bake " + q(kBox) + " --specular-eye 1,2,x -o " + out, 2},           // not a number
+      {"bake " + q(kBox) + " --specular-eye 1 2 nan -o " + out, 2},         // not finite
+      {"bake " + q(kBox) + " --specular-eye 0,2,5 --specular sharp -o " + out, 2},
+      {"render " + q(kBox) + " --specular neighborhood:0 -o " + png, 2},
+      {"render " + q(kBox) + " --background 1,2 -o " + png, 2},
+      {"bake " + q(kBox) + " " + q(kBox) + " -o " + out, 2},               // a batch into a .glb name
+      {"bake " + q(kBox) + " --shard 3/3 -o " + q(dir.string()), 2},        // a shard index beyond the count
+      {"probe --lights " + q(kBox) + " --points " + q(kBox) + " --snap-to-vertices", 2},  // options that need another
+      {"probe --lights " + q(kBox) + " --points " + q(kBox) + " --occluders " + q(kBox) + " --precision float", 2},
+      {"bake", 2},                                                          // a missing argument
+      {"bake " + q((dir / "missing.glb").string()) + " -o " + out, 1},       // an input that cannot be read
+      {"render " + q((dir / "missing.glb").string()) + " -o " + png, 1},
+      {"bake " + q(kBox) + " --lights " + q((dir / "missing.json").string()) + " -o " + out, 2},  // an option's file is missing
+      {"bake " + q(kBox) + " --lights " + q(kBox) + " -o " + out, 1},       // a LIGHTS.json that cannot be read
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.args);
+    const auto r = run_command(kVlit + " " + c.args);
+    CHECK(r.exit_code == c.exit_code);
+    CHECK(r.err.rfind("error: ", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(fs::exists(dir / "x.glb"));
+    CHECK_FALSE(fs::exists(dir / "x.png"));
+  }
+  const auto help = run_command(kVlit + " --help");
+  CHECK(help.exit_code == 0);
+  for (const std::string text : {"Exit status: 0 everything done; 1 an input", "2 usage error", "130 interrupted"})
+    CHECK_MESSAGE(help.out.find(text) != std::string::npos, text);
+}
+
+TEST_CASE("vectors: 1,2,3 and 1 2 3 are the same for every vector option") {
+  const fs::path dir = vlit::test::temp_dir("vector-syntax");
+  const std::string demo = std::string(VLIT_SOURCE_DIR) + "/assets/demo/studio.glb";
+  const std::string lights = std::string(VLIT_SOURCE_DIR) + "/assets/demo/lights.json";
+  // bake --specular-eye: the same bytes either way, and different from another eye.
+  const auto eye = [&](const std::string& name, const std::string& value) {
+    const fs::path path = dir / name;
+    const auto r = run_command(kVlit + " bake " + q(demo) + " --lights " + q(lights) + " -q --specular-eye " + value +
+                               " -o " + q(path.string()));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string commas = eye("commas.glb", "0,2,5"), spaces = eye("spaces.glb", "0 2 5");
+  CHECK(commas == spaces);
+  CHECK(commas != eye("other.glb", "0,2,-5"));
+  // The option takes three numbers and leaves the input after it alone.
+  const auto before_input = run_command(kVlit + " bake --specular-eye 0 2 5 " + q(demo) + " --lights " + q(lights) +
+                                        " -q -o " + q((dir / "before.glb").string()));
+  CHECK_MESSAGE(before_input.exit_code == 0, before_input.err);
+  // render --background: the same picture either way; the corner pixel is the background.
+  const auto background = [&](const std::string& name, const std::string& value) {
+    const fs::path path = dir / name;
+    const auto r = run_command(kVlit + " render " + q(kBox) + " --width 16 --height 12 -q --background " + value + " -o " +
+                               q(path.string()));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    int w = 0, h = 0, channels = 0;
+    unsigned char* data = stbi_load(path.string().c_str(), &w, &h, &channels, 3);
+    REQUIRE(data != nullptr);
+    const std::vector<unsigned char> rgb(data, data + std::size_t(w) * h * 3);
+    stbi_image_free(data);
+    return rgb;
+  };
+  const auto a = background("commas.png", "1,0.5,0"), b = background("spaces.png", "1 0.5 0");
+  CHECK(a == b);
+  CHECK(int(a[0]) == 255);
+  CHECK(std::abs(int(a[1]) - 188) <= 1);  // sRGB(0.5) = 187.5
+  CHECK(int(a[2]) == 0);
+}
+
+TEST_CASE("--mode multiply does not warn about what it was asked to do, replace warns that it drops the old colours") {
+  const fs::path dir = vlit::test::temp_dir("mode-warning");
+  const std::string demo = std::string(VLIT_SOURCE_DIR) + "/assets/demo/studio.glb";
+  const std::string lights = " --lights " + q(std::string(VLIT_SOURCE_DIR) + "/assets/demo/lights.json");
+  const std::string first = (dir / "first.glb").string();
+  REQUIRE(run_command(kVlit + " bake " + q(demo) + lights + " -q -o " + q(first)).exit_code == 0);  // now it has COLOR_0
+  const auto multiply =
+      run_command(kVlit + " bake " + q(first) + lights + " --mode multiply -q -o " + q((dir / "m.glb").string()));
+  REQUIRE_MESSAGE(multiply.exit_code == 0, multiply.err);
+  CHECK(multiply.err.find("COLOR_0") == std::string::npos);
+  CHECK(multiply.err.find("multipl") == std::string::npos);
+  CHECK(multiply.err.find("existing") == std::string::npos);
+  const auto replace = run_command(kVlit + " bake " + q(first) + lights + " -q -o " + q((dir / "r.glb").string()));
+  REQUIRE_MESSAGE(replace.exit_code == 0, replace.err);
+  CHECK(replace.err.find("warning: ") != std::string::npos);
+  CHECK(replace.err.find("replaced the existing COLOR_0") != std::string::npos);
 }

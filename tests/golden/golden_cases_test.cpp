@@ -200,14 +200,15 @@ std::string write_lights(const std::string& name, const std::string& json) {
   return p.string();
 }
 
-// Renders `scene` with `lights`, compares with the golden NAME.png, or rewrites the golden.
+// Renders `scene` with `lights` (none if empty), compares with the golden NAME.png, or rewrites the golden.
 void check_golden(const std::string& name, const std::string& scene, const std::string& lights, const std::string& extra = "") {
   fs::create_directories(kFailureDir);
   const fs::path actual_path = kFailureDir / (name + ".actual.png");
   const fs::path diff_path = kFailureDir / (name + ".diff.png");
   const fs::path golden_path = kGoldenDir / (name + ".png");
   fs::remove(diff_path);
-  const auto r = run_command(kVlit + " render " + q(scene) + " --lights " + q(lights) + " -o " + q(actual_path.string()) +
+  const std::string lights_option = lights.empty() ? std::string() : " --lights " + q(lights);
+  const auto r = run_command(kVlit + " render " + q(scene) + lights_option + " -o " + q(actual_path.string()) +
                              " --width 160 --height 120 --samples 4 -q " + extra);
   REQUIRE_MESSAGE(r.exit_code == 0, "vlit render failed for golden " << name << ": " << r.err);
   if (updating_goldens()) {
@@ -308,4 +309,16 @@ TEST_CASE("golden: debug views (wireframe over the shading, world normals)") {
     {"type": "point", "position": [0.9, 1.4, 0.9], "intensity": 3, "falloff": 2}]})");
   SUBCASE("wireframe") { check_golden("view-wireframe", scene, lights, "--view wireframe"); }
   SUBCASE("normals") { check_golden("view-normals", scene, lights, "--view normals"); }
+}
+
+TEST_CASE("golden: the preview of a baked asset (COLOR_0 x base colour unlit, panels drawn with their radiance)") {
+  // The paper's studio baked under its panels, then drawn as a viewer shows it, without lights
+  // (the default for an asset with COLOR_0 and no lights) and with the panels drawn (--preview
+  // --lights).
+  const std::string baked = (scenes().dir / "studio-area-baked.glb").string();
+  const auto bake = run_command(kVlit + " bake " + q(kPaper + "studio.glb") + " --lights " + q(kPaper + "studio-area.json") +
+                                " -o " + q(baked) + " -q");
+  REQUIRE_MESSAGE(bake.exit_code == 0, bake.err);
+  SUBCASE("no lights") { check_golden("preview-studio-baked", baked, ""); }
+  SUBCASE("with the panels") { check_golden("preview-studio-baked-panels", baked, kPaper + "studio-area.json", "--preview"); }
 }

@@ -37,6 +37,7 @@ struct RenderArgs {
   bool cull_back_faces = false;
   bool quiet = false;
   bool preview = false;
+  bool show_lights = false;
   std::string specular = "peak";
   std::string view = "shaded";
   std::string camera;  // --camera: empty = the file's first camera
@@ -148,6 +149,8 @@ int run_render(const RenderArgs& args) {
       // The triangles are not needed by the scene any more: moved into the mesh.
       meshes.push_back(lit_draw_mesh(prim, scene.material_of(prim), light[i], std::move(loaded.scene.primitives[i].triangles)));
     }
+    if (args.show_lights)
+      for (raster::DrawMesh& mesh : emitter_draw_meshes(scene.lights, camera, args.height)) meshes.push_back(std::move(mesh));
   }
   // The scene's geometry is not needed any more: free it before rasterizing, where a large render
   // peaks (docs/rasterizer.md, memory).
@@ -219,6 +222,9 @@ Runner add_render_command(CLI::App& app) {
                 "Draw what a glTF viewer shows for a baked, unlit asset: COLOR_0 x base colour (textures not "
                 "sampled) plus emission, no lighting; panels, disks and tubes drawn with their own radiance. The "
                 "default when the scene has no lights and has COLOR_0");
+  cmd->add_flag("--show-lights", args->show_lights,
+                "Also draw the lights that have a shape (panels, disks, tubes) with their own radiance in the lit "
+                "render, as the preview does (off by default: the golden images show the lit surfaces only)");
   cmd->add_option("--camera", args->camera,
                   "The glTF camera to draw from: its index in the file's cameras, its name, or auto (a 3/4 view "
                   "framing the scene, whatever the file has); default: the file's first camera, else auto")

@@ -106,7 +106,7 @@ TEST_CASE("render: a scene with COLOR_0 and no lights is previewed as COLOR_0 x 
   fs::remove_all(dir);
 }
 
-TEST_CASE("render --preview: panels and tubes drawn with their own radiance, a one-sided panel black from behind") {
+TEST_CASE("render --preview and --show-lights: panels and tubes drawn with their own radiance, a one-sided panel black from behind") {
   const auto dir = vlit::test::temp_dir("render-preview-emitters");
   const std::string scene = write_quad(dir);
   const std::string lights = (dir / "lights.json").string();
@@ -135,8 +135,20 @@ TEST_CASE("render --preview: panels and tubes drawn with their own radiance, a o
   const auto lit_run = run_command(kVlit + " render " + q(scene) + " --lights " + q(lights) + " -o " + q(lit) +
                                    " --width 160 --height 120 --samples 1 -q");
   REQUIRE_MESSAGE(lit_run.exit_code == 0, lit_run.err);
-  const unsigned char* c = load(lit).at(qx, qy);
+  const Image lit_image = load(lit);
+  const unsigned char* c = lit_image.at(qx, qy);
   CHECK(std::abs(int(c[0]) - srgb8(0.25)) + std::abs(int(c[2]) - srgb8(0.2)) > 4);
+  CHECK(std::abs(int(lit_image.at(fx, fy)[0]) - srgb8(0.5)) > 4);  // no panel drawn: the lit quad behind it
+
+  // --show-lights draws the same emitters over the lit render; the quad stays lit.
+  const std::string shown = (dir / "shown.png").string();
+  const auto shown_run = run_command(kVlit + " render " + q(scene) + " --lights " + q(lights) + " -o " + q(shown) +
+                                     " --width 160 --height 120 --samples 1 --show-lights -q");
+  REQUIRE_MESSAGE(shown_run.exit_code == 0, shown_run.err);
+  const Image with_lights = load(shown);
+  check_pixel(with_lights, fx, fy, 0.5, 0.5, 0.5);
+  check_pixel(with_lights, tx, ty, 0.5, 0.25, 0.125);
+  CHECK(std::equal(with_lights.at(qx, qy), with_lights.at(qx, qy) + 3, lit_image.at(qx, qy)));
   fs::remove_all(dir);
 }
 

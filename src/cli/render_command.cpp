@@ -31,7 +31,7 @@ struct RenderArgs {
   std::vector<double> background{0, 0, 0};
   bool cull_back_faces = false;
   bool quiet = false;
-  std::string specular = "peak";
+  std::string specular = "exact";
   std::string view = "shaded";
   double wire_width = raster::WireframeOptions{}.width;
   std::uint64_t max_pixels = std::uint64_t(1) << 26;  // 8192 x 8192: ~1 GB of image buffers
@@ -181,7 +181,8 @@ Runner add_render_command(CLI::App& app) {
   cmd->add_option("--background", args->background, "Background color, linear RGB (default 0 0 0)")->expected(3);
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
   cmd->add_option("--specular", args->specular,
-                  "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
+                  "Specular: exact (default, the lobe integrated with the light's falloff), exact-no-falloff (the paper's "
+                  "eq. 6), peak or neighborhood:K (the lobe's maximum over linear and area lights; fast) or none");
   cmd->add_option("--view", args->view,
                   "shaded (default); wireframe: triangle edges over the shading; normals: world normals as "
                   "colours, 0.5 n + 0.5, unlit, written without sRGB encoding or exposure (docs/rasterizer.md)")

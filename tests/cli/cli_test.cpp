@@ -136,13 +136,24 @@ TEST_CASE("probe prints the point light's value at each point, 17 digits") {
   std::getline(in, row1);
   CHECK(header == "index,diffuse,specular");
   // Hand values: |L| = 5, cos = 4/5 (normal normalized by vlit), intensity 2 (colour ignored):
-  // diffuse = 2 * 0.8 / 25, specular = 2 * 0.8^8 (Rv = +Z).
+  // diffuse = 2 * 0.8 / 25, specular = 2 * 0.8^8 / 25 (Rv = +Z; the default --specular exact has
+  // the diffuse's falloff 1/|L|^2, docs/conventions.md).
   double index = -1, diffuse = -1, specular = -1;
   REQUIRE(std::sscanf(row0.c_str(), "%lf,%lf,%lf", &index, &diffuse, &specular) == 3);
   CHECK(diffuse == doctest::Approx(2 * 0.8 / 25).epsilon(1e-15));
-  CHECK(specular == doctest::Approx(2 * std::pow(0.8, 8)).epsilon(1e-14));
+  CHECK(specular == doctest::Approx(2 * std::pow(0.8, 8) / 25).epsilon(1e-14));
   CHECK(row1 == "1,0,0");  // facing away: nothing
   CHECK(row0.size() > 20);   // 17 significant digits, not a rounded print
+  // The paper's eq. 6, by name: no falloff on the specular, 2 * 0.8^8.
+  const auto paper = run_command(kVlit + " probe --specular exact-no-falloff --lights " + q(lights.string()) +
+                                 " --points " + q(points.string()));
+  REQUIRE_MESSAGE(paper.exit_code == 0, paper.err);
+  std::istringstream paper_in(paper.out);
+  std::getline(paper_in, header);
+  std::getline(paper_in, row0);
+  REQUIRE(std::sscanf(row0.c_str(), "%lf,%lf,%lf", &index, &diffuse, &specular) == 3);
+  CHECK(diffuse == doctest::Approx(2 * 0.8 / 25).epsilon(1e-15));
+  CHECK(specular == doctest::Approx(2 * std::pow(0.8, 8)).epsilon(1e-14));
 
   const auto bad = dir / "bad.csv";
   std::ofstream(bad) << "px,py,pz,nx,ny,nz,ex,ey,ez,m\n0,0,0,0,0,1,0,0,1\n";
@@ -245,7 +256,7 @@ TEST_CASE("--explain prints the plan and per-stage times") {
   CHECK(render.out.find("rasterize") != std::string::npos);
   const auto bad = run_command(kVlit + " render " + q(kDemo) + " -o " + q((dir / "x.png").string()) + " --specular shiny");
   CHECK(bad.exit_code == 1);
-  CHECK(bad.err.find("--specular: expected peak, neighborhood:K, exact or none") != std::string::npos);
+  CHECK(bad.err.find("--specular: expected exact, exact-no-falloff, peak, neighborhood:K or none") != std::string::npos);
 }
 
 TEST_CASE("bake output is byte-identical with OMP_NUM_THREADS=1 and 2 (float batch kernels)") {
@@ -335,3 +346,4 @@ TEST_CASE("--target accepts COLOR_n or an application-specific _NAME, anything e
   CHECK(run_command(kVlit + " bake " + q(kDemo) + " -o " + q((dir / "x.glb").string()) + " --mode sideways").exit_code == 2);
   CHECK(run_command(kVlit + " bake").exit_code == 2);
 }
+

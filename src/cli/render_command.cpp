@@ -9,6 +9,7 @@
 
 #include "bake/light_vertices.h"
 #include "bake/lit_draw_mesh.h"
+#include "bake/specular_dominance.h"
 #include "cli/commands.h"
 #include "cli/openmp_wait_policy.h"
 #include "cli/scene_args.h"
@@ -119,6 +120,9 @@ int run_render(const RenderArgs& args) {
     const auto light = light_scene_vertices(scene, *plan, request);
     light_seconds = since(t);
     progress.finish();
+    if (const std::string line = specular_dominance_warning(measure_specular_dominance(scene, light), plan->shade.specular);
+        !line.empty() && plan->shade.with_specular)
+      print_warning(args.input + ": " + line);
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
       const ScenePrimitive& prim = scene.primitives[i];
       // The triangles are not needed by the scene any more: moved into the mesh.

@@ -347,3 +347,39 @@ TEST_CASE("--target accepts COLOR_n or an application-specific _NAME, anything e
   CHECK(run_command(kVlit + " bake").exit_code == 2);
 }
 
+TEST_CASE("render says once when the specular dominates, and not with the default exact specular") {
+  // A rough metal floor (m = 1, kd = ks = 1) under a tube light 100 units up: its diffuse is
+  // ~1e-4 per unit intensity. The paper's peak (the lobe's maximum, no falloff) is ~0.5: it
+  // dominates everywhere; the default integral carries the same 1/|L|^2 and does not.
+  const auto dir = vlit::test::temp_dir("cli-specular-dominates");
+  vlit::test::GltfBuilder b;
+  std::vector<float> positions, normals;
+  std::vector<std::uint32_t> indices;
+  constexpr int kCells = 8;
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) {
+      positions.insert(positions.end(), {float(i - kCells / 2), 0.0f, float(j - kCells / 2)});
+      normals.insert(normals.end(), {0.0f, 1.0f, 0.0f});
+    }
+  for (std::uint32_t j = 0; j < kCells; ++j)
+    for (std::uint32_t i = 0; i < kCells; ++i) {
+      const std::uint32_t a = j * (kCells + 1) + i, c = a + kCells + 2;
+      indices.insert(indices.end(), {a, c, a + 1, a, a + kCells + 1, c});
+    }
+  b.add_node(b.add_mesh(positions, normals, indices, TINYGLTF_MODE_TRIANGLES, b.add_material({1, 1, 1, 1}, 1.0, 1.0)));
+  const std::string scene = b.write((dir / "floor.gltf").string());
+  const auto lights = dir / "lights.json";
+  std::ofstream(lights) << R"({"lights": [{"type": "linear", "from": [-5, 100, 0], "to": [5, 100, 0], "intensity": 1}]})";
+  const std::string base = kVlit + " render " + q(scene) + " --lights " + q(lights.string()) + " -o " +
+                           q((dir / "floor.png").string()) + " --width 32 --height 24 --samples 1 --quiet";
+  const auto peak = run_command(base + " --specular peak");
+  REQUIRE_MESSAGE(peak.exit_code == 0, peak.err);
+  const std::string needle = "the specular is over 10x the diffuse at ";
+  const auto first = peak.err.find(needle);
+  CHECK_MESSAGE(first != std::string::npos, peak.err);
+  CHECK(peak.err.find(needle, first + 1) == std::string::npos);  // once
+  CHECK(peak.err.find("--specular exact integrates the lobe") != std::string::npos);
+  const auto exact = run_command(base);
+  REQUIRE_MESSAGE(exact.exit_code == 0, exact.err);
+  CHECK_MESSAGE(exact.err.find(needle) == std::string::npos, exact.err);
+}

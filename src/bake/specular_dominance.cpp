@@ -35,17 +35,23 @@ const char* remedy_words(const SpecularOptions& s) {
 
 }  // namespace
 
-SpecularDominance measure_specular_dominance(const Scene& scene, const std::vector<VertexLight>& light) {
+SpecularDominance measure_specular_dominance(const Scene& scene, const std::vector<VertexLight>& light,
+                                             const Vec3d& eye, double exposure) {
   SpecularDominance d;
   for (std::size_t i = 0; i < scene.primitives.size() && i < light.size(); ++i) {
-    const PhongMaterial phong = phong_from_metallic_roughness(scene.material_of(scene.primitives[i]));
+    const ScenePrimitive& prim = scene.primitives[i];
+    const PhongMaterial phong = phong_from_metallic_roughness(scene.material_of(prim));
     const VertexLight& l = light[i];
-    for (std::size_t v = 0; v < l.diffuse.size(); ++v) {
-      const double diffuse = brightest(hadamard(phong.kd, static_cast<Vec3d>(l.diffuse[v])));
-      const double specular = v < l.specular.size() ? brightest(hadamard(phong.ks, static_cast<Vec3d>(l.specular[v]))) : 0.0;
+    for (std::size_t v = 0; v < l.diffuse.size() && v < prim.positions.size(); ++v) {
+      if (v < prim.normals.size() && !(dot(prim.normals[v], eye - prim.positions[v]) > 0)) continue;
+      const Vec3d diffuse_term = hadamard(phong.kd, static_cast<Vec3d>(l.diffuse[v]));
+      const Vec3d specular_term =
+          v < l.specular.size() ? hadamard(phong.ks, static_cast<Vec3d>(l.specular[v])) : Vec3d{};
+      const double diffuse = brightest(diffuse_term), specular = brightest(specular_term);
       if (!(diffuse > 0) && !(specular > 0)) continue;
       ++d.lit;
-      if (specular > kSpecularDominanceRatio * diffuse) ++d.dominated;
+      const bool saturates = exposure * diffuse < 1 && exposure * brightest(diffuse_term + specular_term) >= 1;
+      if (specular > kSpecularDominanceRatio * diffuse || saturates) ++d.dominated;
     }
   }
   return d;
@@ -54,7 +60,8 @@ SpecularDominance measure_specular_dominance(const Scene& scene, const std::vect
 std::string specular_dominance_warning(const SpecularDominance& d, const SpecularOptions& specular) {
   if (!d.dominates()) return {};
   char head[160];
-  std::snprintf(head, sizeof head, "the specular is over %gx the diffuse at %zu of %zu lit vertices (%.1f %%) ",
+  std::snprintf(head, sizeof head,
+                "the specular is over %gx the diffuse or saturates at %zu of %zu lit vertices facing the eye (%.1f %%) ",
                 kSpecularDominanceRatio, d.dominated, d.lit, 100.0 * double(d.dominated) / double(d.lit));
   return std::string(head) + "(" + method_words(specular) + "); " + remedy_words(specular);
 }

@@ -120,7 +120,8 @@ int run_render(const RenderArgs& args) {
     const auto light = light_scene_vertices(scene, *plan, request);
     light_seconds = since(t);
     progress.finish();
-    if (const std::string line = specular_dominance_warning(measure_specular_dominance(scene, light), plan->shade.specular);
+    if (const std::string line = specular_dominance_warning(
+            measure_specular_dominance(scene, light, *request.eye, args.exposure), plan->shade.specular);
         !line.empty() && plan->shade.with_specular)
       print_warning(args.input + ": " + line);
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {

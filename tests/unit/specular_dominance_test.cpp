@@ -95,7 +95,7 @@ TEST_CASE("specular dominance: the line names the method and the way out") {
   CHECK(specular_dominance_warning(d, paper).find("--specular exact integrates") != std::string::npos);
 }
 
-TEST_CASE("specular dominance: a specular that saturates a vertex dominates it; vertices facing away do not count") {
+TEST_CASE("specular dominance: a specular that saturates a vertex dominates it, vertices facing away do not count") {
   const Scene scene = scene_of(4, 0.5, 1.0);  // kd = ks = 0.5
   VertexLight light;
   light.diffuse.assign(4, Vec3f{1, 1, 1});     // diffuse term 0.5

@@ -193,17 +193,26 @@ LD ref_specular_peak(const Typed<T>& x) {
   return ref_phong(ref_cos_rv(g, ref_peak_t(g)), m);
 }
 
-// Exact specular: ∫ [L.N > 0] max(0, Rv.L̂)^m dt, graded around the peak from 1e-13 in t.
+// Exact specular: ∫ [L.N > 0] max(0, Rv.L̂)^m / |L|^n dt with n the light's falloff (the
+// radiometric definition), or without 1/|L|^n when `with_falloff` is false (the paper's form);
+// graded around the peak from 1e-13 in t.
 template <class T>
-LD ref_specular_exact(const Typed<T>& x) {
+LD ref_specular_exact(const Typed<T>& x, bool with_falloff = true) {
   const RefGeom g = ref_geom(x);
   const LD m = LD(x.sp.shininess);
-  if (g.ell == 0) return dot(g.l0, g.n) > 0 ? ref_phong(ref_cos_rv(g, 0), m) : 0;
+  const LD nf = with_falloff ? LD(x.light.falloff) : LD(0);
+  if (g.ell == 0)
+    return dot(g.l0, g.n) > 0 ? ref_phong(ref_cos_rv(g, 0), m) / std::pow(std::sqrt(dot(g.l0, g.l0)), nf) : 0;
   if (!g.visible) return 0;
   const LD tp = ref_peak_t(g);
   const LD rvd = dot(g.rv, g.ld);
   const LD t_zero = rvd != 0 ? -dot(g.rv, g.l0) / rvd : -1;
-  auto f = [&](LD t) { return ref_phong(ref_cos_rv(g, t), m); };
+  auto f = [&](LD t) {
+    const LD lobe = ref_phong(ref_cos_rv(g, t), m);
+    if (nf == 0 || lobe == 0) return lobe;
+    const V l = g.l0 + g.ld * t;
+    return lobe / std::pow(dot(l, l), nf / 2);
+  };
   return integrate_pieces(f, breakpoints(g, {t_zero}, tp, LD(1e-13)));
 }
 

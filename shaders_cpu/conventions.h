@@ -9,8 +9,10 @@
 // - Horizon clipping: light arriving from below the tangent plane of P (L.N <= 0) contributes
 //   nothing, to the diffuse and to the specular term. The paper ignores this; we do not.
 // - Diffuse = Ip kd ∫ max(0, cos theta) (falloff) over the light, specular = Ip ks ∫ [L.N > 0]
-//   max(0, Rv.L̂)^m (or the paper's most-important-point approximation of it); see
-//   docs/conventions.md "Radiometric definitions".
+//   max(0, Rv.L̂)^m (falloff) with the same distance falloff 1/|L|^n as the diffuse for point, spot
+//   and linear lights (SpecularFalloff; the paper's eq. 6 has none), or the paper's
+//   most-important-point approximation of it (the lobe's maximum); see docs/conventions.md
+//   "Radiometric definitions".
 // - Colours are linear RGB everywhere; encoding (sRGB PNG, unorm glTF) happens only at output.
 //
 // Scalar type: every kernel is a template on T = float or double. Kernels know nothing about
@@ -51,13 +53,25 @@ struct Response {
 // How the specular of an extended (linear or area) light is evaluated.
 enum class SpecularMethod {
   kNone,          // diffuse only
-  kPeak,          // paper eq. 7-8 / 11-12: the light's single most important point
+  kPeak,          // paper eq. 7-8 / 11-12: the lobe's maximum over the light (fast mode)
   kNeighborhood,  // the paper's refinement: K samples around the most important point
-  kExact,         // the Phong lobe integrated over the light (reference quality)
+  kExact,         // the Phong lobe integrated over the light (the definition; the default)
+};
+
+// Whether the specular of point, spot and linear lights carries the light's distance falloff
+// 1/|L|^n (the radiometric definition: the BRDF scales the light's irradiance, as in glTF) or not
+// (Picott 1992 eq. 6 as printed, and its integral along the segment: reachable by name,
+// `--specular exact-no-falloff`). Area, disk and directional lights have no 1/|L|^n to drop: their
+// specular is the same under both. The peak and neighbourhood specular of a linear light is the
+// lobe's maximum (no falloff) under both.
+enum class SpecularFalloff {
+  kAsDiffuse,  // 1/|L|^n on the specular, as on the diffuse (default)
+  kNone,       // the paper's eq. 6: no distance falloff on the specular
 };
 
 struct SpecularOptions {
-  SpecularMethod method = SpecularMethod::kPeak;
+  SpecularMethod method = SpecularMethod::kExact;
+  SpecularFalloff falloff = SpecularFalloff::kAsDiffuse;
   int neighborhood_samples = 4;        // K for kNeighborhood
   double exact_tolerance = 1e-9;       // relative tolerance of the exact (quadrature) specular
 };

@@ -1,7 +1,8 @@
 // Linear (tube) light: the entry point the bake loop and the CLI's `probe` call.
 //
-// What it computes: the diffuse Id = ∫_0^1 max(0, L.N)/|L|^(n+1) dt and the specular (peak,
-// neighbourhood or exact, SpecularOptions::method) of a segment light of unit intensity per unit
+// What it computes: the diffuse Id = ∫_0^1 max(0, L.N)/|L|^(n+1) dt and the specular (peak or
+// neighbourhood: the lobe's maximum; exact: ∫_0^1 [L.N > 0] max(0, Rv.L̂)^m / |L|^n dt, without
+// the 1/|L|^n for SpecularFalloff::kNone; SpecularOptions) of a segment light of unit intensity per unit
 // t, with kd = ks = 1 (conventions.h; docs/conventions.md "Radiometric definitions"; Picott 1992 eq. 3-8).
 //
 // Dispatch: integer falloff n in {0,1,2,3} uses the closed forms (linear_diffuse_closed.h) unless
@@ -34,13 +35,15 @@ namespace vlit {
 
 // The exact specular: the closed form for integer m where its rounding bound holds
 // (linear_specular_closed.h), the adaptive form otherwise and for real m (linear_specular_exact.h).
+// n: the falloff exponent on the specular (0: none); the closed form takes n = 0 and n = 2.
+// Normalised (units of scale^-n).
 template <class A>
-A linear_specular_exact_dispatch(const LinearFrame<A>& fr, A m, A rel_tol) {
-  if (m == std::floor(m) && m >= A(0) && m <= A(kLinearClosedMaxShininess)) {
-    const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m));
+A linear_specular_exact_dispatch(const LinearFrame<A>& fr, A m, A rel_tol, A n = A(0)) {
+  if (m == std::floor(m) && m >= A(0) && m <= A(kLinearClosedMaxShininess) && (n == A(0) || n == A(2))) {
+    const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m), int(n));
     if (c.accepted) return c.value;
   }
-  return linear_specular_exact_frame(fr, m, rel_tol);
+  return linear_specular_exact_frame(fr, m, rel_tol, n);
 }
 
 struct LinearDiffuseOptions {
@@ -69,11 +72,16 @@ Response<T> shade_linear(const LinearLight<T>& light, const ShadingPoint<T>& sp,
     case SpecularMethod::kNeighborhood:
       r.specular = T(linear_specular_neighborhood_frame(fr, m, spec.neighborhood_samples));
       break;
-    case SpecularMethod::kExact:
+    case SpecularMethod::kExact: {
       // Its own frame, set up in long double: the lobe's height is m times more sensitive to the
-      // frame's rounding than the diffuse (make_linear_frame_precise).
-      r.specular = T(linear_specular_exact_dispatch(make_linear_frame_precise(light, sp), m, A(spec.exact_tolerance)));
+      // frame's rounding than the diffuse (make_linear_frame_precise). With the diffuse's falloff
+      // n by default; without it (n = 0) for SpecularFalloff::kNone, the paper's form.
+      const double ns = spec.falloff == SpecularFalloff::kAsDiffuse ? n : 0.0;
+      const LinearFrame<A> precise = make_linear_frame_precise(light, sp);
+      r.specular = linear_saturate<T>(double(linear_specular_exact_dispatch(precise, m, A(spec.exact_tolerance), A(ns))) *
+                                      linear_scale_factor(precise.scale, ns));
       break;
+    }
   }
   return r;
 }

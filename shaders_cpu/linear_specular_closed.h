@@ -1,10 +1,11 @@
 // Linear light, specular term, closed form for integer m: the Phong lobe integrated over the
 // visible segment by a recurrence in m.
 //
-// What it computes: Is(exact) = ∫_0^1 [L(t).N > 0] max(0, Rv.L̂(t))^m dt for unit intensity and
-// integer m >= 0, the quantity linear_specular_exact.h integrates adaptively (the same definition:
-// docs/conventions.md "Radiometric definitions" as implemented there, without a distance falloff;
-// m = 0 is the limit m -> 0+, core/robust_math.h phong_power).
+// What it computes: Is(exact) = ∫_0^1 [L(t).N > 0] max(0, Rv.L̂(t))^m / |L(t)|^n dt for unit
+// intensity, integer m >= 0 and falloff n = 0 (the paper's form) or n = 2 (the radiometric
+// definition for the usual inverse-square light), the quantity linear_specular_exact.h integrates
+// adaptively (docs/conventions.md "Radiometric definitions"; m = 0 is the limit m -> 0+,
+// core/robust_math.h phong_power). Other n are refused (the caller uses the adaptive form).
 //
 // Sources: the specular integral of Picott 1992 eq. 6 along eq. 3; the idea of a recurrence in
 // the exponent is that of Poulin and Amanatides 1991 ("Shading and shadowing with linear light
@@ -17,7 +18,9 @@
 // A = C cos θ0, B = C sin θ0 (C = |(A, B)| <= 1), a = cos θ0, b = sin θ0,
 // c = cos(θ - θ0) = (a + b x) / sqrt(1 + x^2), sφ = sin(θ - θ0) = (a x - b) / sqrt(1 + x^2). Then
 //   Is = h C^m U_m / |Ld|,   U_k = ∫ c^k sec²θ dθ = ∫ c^k dx,   W_k = ∫ c^k dθ
-// over the clipped interval. W has the classical reduction k W_k = [c^(k-1) sφ] + (k - 1) W_(k-2).
+// over the clipped interval. With the inverse-square falloff, |L|^2 = h² sec²θ cancels sec²θ:
+//   Is(n = 2) = C^m W_m / (h |Ld|),
+// W alone (the classical reduction below, m/2 steps), with the same magnitude bookkeeping. W has the classical reduction k W_k = [c^(k-1) sφ] + (k - 1) W_(k-2).
 // For U: integrate by parts against d tan θ (dc/dθ = -sφ, and sφ tan θ = a sec θ - c), which
 // brings in V_j = ∫ c^j sec θ dθ; c sec θ = a + b tan θ brings in Y_j = ∫ c^j tan θ dθ, and one
 // more integration by parts of Y_j (sin θ = b c + a sφ, c sec θ tan θ = a tan θ + b (sec²θ - 1))
@@ -51,17 +54,24 @@
 // M/U is needed because the rounding of the inputs (x, a, b), which M does not count, dominates
 // under heavy cancellation (error 11x the estimate at M/U = 550, m = 4, before the cap).
 //
+// The W chain (n = 2) carries the same estimate, with the absolute rounding of sφ at the ends
+// (eps (|a x| + |b|) / sqrt(1 + x^2), not eps |sφ|) and of the angle in W_1's half-angle form
+// counted in its magnitude: without them a 1e-6 light with the lobe's axis on it was accepted at
+// m = 40 with error 6.5e-11 against an estimate of 4e-14.
 // Measured accuracy (double; long-double Boost.Math reference of linear_reference.h on the frame's
-// double inputs; `./build/release/tests/linear_light_tests -tc="closed-form*" -s`):
-//   random, m integer log-uniform in [1, 1e3], 2000 seeds: 69 % accepted, max rel. error 9.7e-14;
+// double inputs, the falloff in its integrand; `./build/release/tests/linear_light_tests -tc="closed-form*" -s`):
+//   n = 0: random, m integer log-uniform in [1, 1e3], 2000 seeds: 69 % accepted, max rel. error 9.7e-14;
 //   random, m in [1e3, 1e4], 400 seeds: 56 % accepted, max 1.8e-12 (the m eps of the integrand);
+//   n = 2: 73 % accepted, max 1.2e-13, error / estimate <= 0.94; m in [1e3, 1e4]: 55 %, max
+//   1.8e-12, <= 0.95; the named stiff cases below at m = 0, 1e-12, 1, 40, 1e4: max 9.5e-13;
 //   named stiff cases (collinear, near-collinear, far 1e6, near 1e-6, crossing horizon, endpoint
 //   on the tangent plane, grazing, zero-length, P on the segment, tiny 1e-6, huge 1e6) at
 //   m = 0, 1, 40, 1e4 through `--specular exact`: max 9.5e-13, all finite.
 // Float: the float instantiation computes in double (LinearCompute) and rounds once.
 // Cost (`./build/release/bench/linear_light_bench --benchmark_filter=run_engine`, CPU time per
-// evaluation including the long-double frame): closed form 0.49 us for m in [1, 100] and 10 us for
-// m in [1e2, 1e4] (O(m)); adaptive 8.7 us and 14.5 us on the same cases.
+// evaluation including the long-double frame, n = 0): closed form 0.49 us for m in [1, 100] and
+// 10 us for m in [1e2, 1e4] (O(m)); adaptive 8.7 us and 14.5 us on the same cases. The W chain
+// (n = 2) is a subset of the U chain's work per step.
 // Stiff cases: zero-length and P on the segment take the exact point forms of
 // linear_specular_exact.h; h = 0 (collinear) is refused (the adaptive form's direction is ±u);
 // a lobe that misses the clipped interval entirely gives 0 exactly; C = 0 (Rv normal to the plane
@@ -92,20 +102,24 @@ struct LinearSpecularClosed {
   bool accepted = false;  // condition <= kLinearClosedBound (or an exact special case)
 };
 
-// Closed form for integer m >= 0. Always returns a value; `accepted` says whether it is within
-// the bound (callers fall back to linear_specular_exact_frame otherwise).
+// Closed form for integer m >= 0 and falloff n in {0, 2}, normalised like
+// linear_specular_exact_frame (units of scale^-n). Always returns a value; `accepted` says whether
+// it is within the bound (callers fall back to linear_specular_exact_frame otherwise; always for
+// other n).
 template <class A>
-LinearSpecularClosed<A> linear_specular_closed_frame(const LinearFrame<A>& fr, int m) {
+LinearSpecularClosed<A> linear_specular_closed_frame(const LinearFrame<A>& fr, int m, int n = 0) {
   LinearSpecularClosed<A> r;
+  if (n != 0 && n != 2) return r;
   r.accepted = true;
   if (fr.empty) return r;
   const A mm = A(m);
   if (fr.zero_length) {
     r.value = fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, mm) : A(0);
+    if (n == 2) r.value /= fr.mid_r * fr.mid_r;
     return r;
   }
-  if (fr.on_segment) {
-    r.value = phong_power(linear_cos_rv(fr, fr.sb), mm) * fr.delta / fr.ell;
+  if (fr.on_segment) {  // n = 2: ∫ ds / s² diverges at P; 0, as the diffuse
+    r.value = n == 0 ? phong_power(linear_cos_rv(fr, fr.sb), mm) * fr.delta / fr.ell : A(0);
     return r;
   }
   if (!(fr.h > A(0))) {  // collinear: refused (the adaptive form handles the constant direction)
@@ -138,6 +152,46 @@ LinearSpecularClosed<A> linear_specular_closed_frame(const LinearFrame<A>& fr, i
   // [sqrt(1 + x^2)] = (x_b - x_a)(x_b + x_a) / (r_b + r_a): no cancellation.
   const A dsec = dx * (xb + xa) / (rb + ra);
   constexpr A eps = std::numeric_limits<A>::epsilon();
+
+  if (n == 2) {
+    // W_m by k W_k = [c^(k-1) sφ] + (k - 1) W_(k-2), from W_0 = Δθ or W_1 = [sφ].
+    A w_val, w_mag, q_a, q_b;  // q = c^(k-1) at both ends for the next k
+    int k;
+    if (m % 2 == 0) {
+      w_val = dtheta;
+      q_a = ca;
+      q_b = cb;
+      k = 2;
+    } else {
+      w_val = A(2) * std::cos((theta_a + theta_b) / A(2) - theta0) * std::sin(dtheta / A(2));
+      q_a = ca * ca;
+      q_b = cb * cb;
+      k = 3;
+    }
+    // |W_0| or |W_1|, and for W_1 the rounding of the angle in its cosine (absolute error about
+    // eps (|θa| + |θb| + 2|θ0|) / 2, which cancels when the lobe's axis is near π/2 off the
+    // interval's middle).
+    w_mag = std::fabs(w_val);
+    if (m % 2 == 1)
+      w_mag += std::fabs(std::sin(dtheta / A(2))) * (std::fabs(theta_a) + std::fabs(theta_b) + A(2) * std::fabs(theta0));
+    // sφ at an end carries an absolute rounding error of about eps (|a x| + |b|) / sqrt(1 + x^2),
+    // not eps |sφ|: where the lobe's axis is on a short light, sφ ~ 0 at both ends and [c^(k-1) sφ]
+    // is the difference of two such roundings (measured: 6.5e-11 at m = 40 on a 1e-6 light before
+    // this was counted).
+    const A spa_mag = (std::fabs(a * xa) + std::fabs(b)) / ra, spb_mag = (std::fabs(a * xb) + std::fabs(b)) / rb;
+    for (; k <= m; k += 2) {
+      const A kk = A(k);
+      const A wb = q_b * spb, wa = q_a * spa;
+      w_val = (wb - wa + (kk - A(1)) * w_val) / kk;
+      w_mag = (q_b * spb_mag + q_a * spa_mag + (kk - A(1)) * w_mag) / kk;
+      q_a *= ca * ca;
+      q_b *= cb * cb;
+    }
+    r.condition = w_val > A(0) ? A(m + 8) * eps * w_mag / w_val : std::numeric_limits<A>::infinity();
+    r.accepted = r.condition <= A(kLinearClosedBound) && w_mag <= A(kLinearClosedMaxCancellation) * w_val;
+    r.value = std::fmax(std::pow(big_c, mm) * w_val / (fr.h * fr.ell), A(0));
+    return r;
+  }
 
   A u_val, u_mag;  // U_k of the chain and the magnitude of its terms
   A w_val, w_mag;  // W_(k-2) of the chain

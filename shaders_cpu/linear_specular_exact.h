@@ -1,7 +1,10 @@
 // Linear light, specular term, the Phong lobe integrated over the visible segment.
 //
-// What it computes: Is(exact) = ∫_0^1 [L(t).N > 0] max(0, Rv.L̂(t))^m dt for unit intensity
-// (docs/conventions.md "Radiometric definitions"), to the relative tolerance SpecularOptions::exact_tolerance.
+// What it computes: Is(exact) = ∫_0^1 [L(t).N > 0] max(0, Rv.L̂(t))^m / |L(t)|^n dt for unit
+// intensity (docs/conventions.md "Radiometric definitions": the diffuse's distance falloff n; n = 0
+// is the paper's form, SpecularFalloff::kNone), to the relative tolerance
+// SpecularOptions::exact_tolerance. Normalised like the diffuse: in units of scale^-n
+// (linear_scale_factor, linear_geometry.h).
 //
 // Sources: Picott 1992 eq. 6 integrated along eq. 3 (the paper rejects this integral as too slow
 // and uses the peak, eq. 7-8; we keep it as the reference-quality method). Integrated in the
@@ -15,7 +18,8 @@
 // holds and this form elsewhere (linear_specular_exact_dispatch in linear_light.h); both on the
 // frame set up in long double (make_linear_frame_precise).
 // Departures from the paper: it is not in the paper; horizon clipping.
-// Stiff cases: zero-length (point value, exact), P on the segment (L̂ = ±u on the visible part),
+// Stiff cases: zero-length (point value, exact), P on the segment (L̂ = ±u on the visible part;
+// with falloff n >= 1 the integral diverges and gives 0, as the diffuse does, linear_diffuse_closed.h),
 // large m (lobe panels); tests/kernels/linear/linear_stiff_test.cpp.
 // Measured accuracy: docs/linear-lights.md,
 //   ./build/linear/tests/linear_light_tests -tc="accuracy table" -s
@@ -31,14 +35,31 @@
 
 namespace vlit {
 
+// n: the distance falloff exponent on the specular (0: none, the paper's eq. 6 form).
 template <class A>
-A linear_specular_exact_frame(const LinearFrame<A>& fr, A m, A rel_tol) {
+A linear_specular_exact_frame(const LinearFrame<A>& fr, A m, A rel_tol, A n = A(0)) {
   if (fr.empty) return A(0);
-  if (fr.zero_length) return fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, m) : A(0);
-  if (fr.on_segment) return phong_power(linear_cos_rv(fr, fr.sb), m) * fr.delta / fr.ell;
+  if (fr.zero_length)
+    return fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, m) / (n == A(0) ? A(1) : std::pow(fr.mid_r, n)) : A(0);
+  if (fr.on_segment) {
+    // L = s u on the visible side of P: the lobe is constant there, ∫ ds / |s|^n over [lo, hi].
+    const A lobe = phong_power(linear_cos_rv(fr, fr.sb), m);
+    if (n == A(0)) return lobe * fr.delta / fr.ell;
+    if (!(n < A(1))) return A(0);  // divergent at P: 0, as the diffuse (on_segment_diffuse)
+    const A lo = std::fabs(fr.sb <= A(0) ? fr.sb : std::fmax(fr.sa, A(0)));
+    const A hi = std::fabs(fr.sb <= A(0) ? fr.sa : fr.sb);
+    const A e = A(1) - n;
+    return lobe * (std::pow(hi, e) - std::pow(lo, e)) / e / fr.ell;
+  }
   // Integration variable tau = s - sa in [0, delta] (accurate panel lengths for far lights).
   const A sa = fr.sa;
-  auto integrand = [&fr, m, sa](A tau) { return phong_power(linear_cos_rv(fr, sa + tau), m); };
+  auto integrand = [&fr, m, sa, n](A tau) {
+    const A s = sa + tau;
+    const A lobe = phong_power(linear_cos_rv(fr, s), m);
+    if (n == A(0) || lobe == A(0)) return lobe;
+    const A r2 = fr.h * fr.h + s * s;  // |L(s)|^2 in the frame's unit
+    return n == A(2) ? lobe / r2 : lobe / std::pow(r2, n / A(2));
+  };
   constexpr int kCapacity = 160;
   A edges[kCapacity];
   int count = 0;
@@ -63,16 +84,22 @@ A linear_specular_exact_frame(const LinearFrame<A>& fr, A m, A rel_tol) {
   sort_edges(edges, count);
   const A tol = std::fmax(rel_tol, A(8) * std::numeric_limits<A>::epsilon());
   // Absolute floor: the tolerance relative to the peak value times the visible length, so that a
-  // lobe that misses the segment (integral ~0) does not force endless bisection.
+  // lobe that misses the segment (integral ~0) does not force endless bisection. (The falloff
+  // factor is >= 1 in the frame's unit, |L| <= 1, so it only makes this floor more cautious.)
   const A floor = tol * A(1e-6) * phong_power(linear_cos_rv(fr, s_peak), m) * fr.delta;
   const A v = adaptive_gauss_legendre(integrand, edges, count, tol, floor);
   return std::fmax(v, A(0)) / fr.ell;
 }
 
+// In world units: the normalised value times scale^-n. n = light.falloff, or 0 without falloff.
 template <class T>
-T linear_specular_exact(const LinearLight<T>& light, const ShadingPoint<T>& sp, double rel_tol) {
+T linear_specular_exact(const LinearLight<T>& light, const ShadingPoint<T>& sp, double rel_tol,
+                        SpecularFalloff falloff = SpecularFalloff::kAsDiffuse) {
   using A = LinearCompute<T>;
-  return T(linear_specular_exact_frame(make_linear_frame_precise(light, sp), A(sp.shininess), A(rel_tol)));
+  const double n = falloff == SpecularFalloff::kAsDiffuse ? double(light.falloff) : 0.0;
+  const LinearFrame<A> fr = make_linear_frame_precise(light, sp);
+  return linear_saturate<T>(double(linear_specular_exact_frame(fr, A(sp.shininess), A(rel_tol), A(n))) *
+                            linear_scale_factor(fr.scale, n));
 }
 
 }  // namespace vlit

@@ -3,7 +3,8 @@
 // Cone attenuation as in glTF KHR_lights_punctual: with c = cos of the angle between the spot axis
 // and the ray from the light to P, s = clamp((c - cos_outer) / (cos_inner - cos_outer), 0, 1),
 // attenuation = s^2. Inside the inner cone the light is a point light; outside the outer cone it
-// is dark. The same factor scales diffuse and specular (the paper's figure 3 spotlights).
+// is dark. The same factor scales diffuse and specular (the paper's figure 3 spotlights); the
+// specular has the point light's distance falloff (point_light.h).
 // Stiff cases: inner = outer (a hard cone edge) divides by max(cos_inner - cos_outer, 1e-6).
 #pragma once
 
@@ -32,10 +33,11 @@ T spot_attenuation(const SpotLight<T>& light, const Vec3<T>& p) {
 }
 
 template <class T>
-Response<T> shade_spot(const SpotLight<T>& light, const ShadingPoint<T>& sp, bool with_specular) {
+Response<T> shade_spot(const SpotLight<T>& light, const ShadingPoint<T>& sp, bool with_specular,
+                       SpecularFalloff specular_falloff = SpecularFalloff::kAsDiffuse) {
   const T attenuation = spot_attenuation(light, sp.p);
   if (attenuation <= T(0)) return {};
-  Response<T> r = shade_point(PointLight<T>{light.position, light.falloff}, sp, with_specular);
+  Response<T> r = shade_point(PointLight<T>{light.position, light.falloff}, sp, with_specular, specular_falloff);
   r.diffuse *= attenuation;
   r.specular *= attenuation;
   return r;

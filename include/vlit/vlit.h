@@ -121,14 +121,16 @@ class Lights {
 // ---------------------------------------------------------------------------------------------
 // Settings shared by every call
 
-enum class Specular { kPeak, kNeighborhood, kExact, kNone };  // --specular
+// --specular: kExact is the definition (docs/conventions.md), kExactNoFalloff the paper's eq. 6
+// without the distance falloff, kPeak / kNeighborhood the lobe's maximum (fast modes).
+enum class Specular { kPeak, kNeighborhood, kExact, kNone, kExactNoFalloff };
 
 struct Settings {
   int threads = 0;                                   // OpenMP threads; 0 = OpenMP's default
   const std::atomic<bool>* cancel = nullptr;         // polled between chunks of vertices; may be null
   // (vertices done, vertices total), on the calling thread between chunks; may be empty.
   std::function<void(std::size_t, std::size_t)> progress;
-  Specular specular = Specular::kPeak;               // method for linear, area and disk lights
+  Specular specular = Specular::kExact;              // specular method (see Specular)
   int neighborhood_samples = 4;                      // K of kNeighborhood, [1, 1024]
   bool shadows = false;                              // --shadows on (docs/shadows.md)
   bool file_lights = true;                           // use the lights stored in the model (not --no-file-lights)

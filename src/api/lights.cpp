@@ -264,6 +264,10 @@ ShadeOptions shade_options(const Settings& s) {
     case Specular::kNeighborhood: o.specular.method = SpecularMethod::kNeighborhood; break;
     case Specular::kExact: o.specular.method = SpecularMethod::kExact; break;
     case Specular::kNone: o.specular.method = SpecularMethod::kNone; break;
+    case Specular::kExactNoFalloff:
+      o.specular.method = SpecularMethod::kExact;
+      o.specular.falloff = SpecularFalloff::kNone;
+      break;
   }
   o.specular.neighborhood_samples = s.neighborhood_samples;
   o.with_specular = o.specular.method != SpecularMethod::kNone;

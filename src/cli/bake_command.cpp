@@ -46,7 +46,7 @@ struct BakeArgs {
   std::string mode = "replace";
   std::string target = "COLOR_0";
   std::vector<double> specular_eye;  // three numbers, or empty
-  std::string specular = "peak";
+  std::string specular = "exact";
   double exposure = 1;
   bool no_unlit = false;
   bool quiet = false;
@@ -268,7 +268,8 @@ Runner add_bake_command(CLI::App& app) {
                      "Also bake specular light seen from this world-space eye, x,y,z or x y z (off by default); it is "
                      "folded into the multiplier of the base color (docs/gltf-output.md)");
   cmd->add_option("--specular", args->specular,
-                  "Specular method of linear and area lights with --specular-eye: peak (default), neighborhood:K, exact");
+                  "Specular with --specular-eye: exact (default, the lobe integrated with the light's falloff), "
+                  "exact-no-falloff (the paper's eq. 6), peak or neighborhood:K (the lobe's maximum; fast)");
   cmd->add_flag("--no-unlit", args->no_unlit, "Do not mark materials KHR_materials_unlit (viewers will light the asset again)");
   cmd->add_flag("--keep-image-links", args->keep_image_links,
                 "In a .glb output, keep the input's image files as links (rewritten relative to the output) "

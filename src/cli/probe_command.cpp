@@ -1,4 +1,4 @@
-// vlit probe --lights LIGHTS.json --points POINTS.csv [--specular peak|neighborhood:K|exact|none]
+// vlit probe --lights LIGHTS.json --points POINTS.csv [--specular exact|exact-no-falloff|peak|neighborhood:K|none]
 //            [--precision double|float] [--occluders SCENE.gltf|glb [--snap-to-vertices]]
 // A light meter: diffuse and specular (kd = ks = 1, scalar intensities, colours ignored) summed
 // over all lights at each point, 17 significant digits. With --occluders, the triangles of SCENE
@@ -25,7 +25,7 @@ namespace {
 
 struct ProbeArgs {
   std::string lights, points;
-  std::string specular = "peak";
+  std::string specular = "exact";
   std::string precision = "double";
   std::string occluders;
   bool snap_to_vertices = false;
@@ -85,7 +85,8 @@ Runner add_probe_command(CLI::App& app) {
   cmd->add_option("--lights", args->lights, "LIGHTS.json (docs/lights-json.md)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--points", args->points, "CSV with header px,py,pz,nx,ny,nz,ex,ey,ez,m (position, normal, eye, shininess)")
       ->required()->check(CLI::ExistingFile);
-  cmd->add_option("--specular", args->specular, "Specular of extended lights: peak (default), neighborhood:K, exact or none");
+  cmd->add_option("--specular", args->specular, "Specular: exact (default, the lobe integrated with the light's falloff, docs/conventions.md), "
+                  "exact-no-falloff (the paper's eq. 6), peak or neighborhood:K (the lobe's maximum) or none");
   cmd->add_option("--precision", args->precision, "Kernel scalar type: double (default) or float")
       ->check(CLI::IsMember({"double", "float"}));
   cmd->add_option("--occluders", args->occluders,
@@ -94,7 +95,9 @@ Runner add_probe_command(CLI::App& app) {
   cmd->add_flag("--snap-to-vertices", args->snap_to_vertices,
                 "With --occluders: a point within 1e-6 of the occluders' size of one of their vertices (and of no "
                 "other) is moved exactly onto it (points written in single precision by another program)");
-  cmd->footer("Output: index,diffuse,specular per point, kd = ks = 1, summed over all lights with their scalar intensity.");
+  cmd->footer("Output: index,diffuse,specular per point, kd = ks = 1, summed over all lights with their scalar intensity. "
+              "With exact, the specular is Ip ∫ [L.N > 0] max(0, Rv.L̂)^m / |L|^n over the light (point, spot, "
+              "linear; the area lights' solid-angle form), as docs/conventions.md defines it.");
   return [args] { return run_probe(*args); };
 }
 

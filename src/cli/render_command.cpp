@@ -12,6 +12,7 @@
 #include "bake/light_vertices.h"
 #include "bake/lit_draw_mesh.h"
 #include "bake/preview_draw_mesh.h"
+#include "bake/specular_dominance.h"
 #include "cli/camera_option.h"
 #include "cli/commands.h"
 #include "cli/openmp_wait_policy.h"
@@ -38,7 +39,7 @@ struct RenderArgs {
   bool quiet = false;
   bool preview = false;
   bool show_lights = false;
-  std::string specular = "peak";
+  std::string specular = "exact";
   std::string view = "shaded";
   std::string camera;  // --camera: empty = the file's first camera
   double wire_width = raster::WireframeOptions{}.width;
@@ -144,6 +145,10 @@ int run_render(const RenderArgs& args) {
     const auto light = light_scene_vertices(scene, *plan, request);
     light_seconds = since(t);
     progress.finish();
+    if (const std::string line = specular_dominance_warning(
+            measure_specular_dominance(scene, light, *request.eye, args.exposure), plan->shade.specular);
+        !line.empty() && plan->shade.with_specular)
+      print_warning(args.input + ": " + line);
     for (std::size_t i = 0; i < scene.primitives.size(); ++i) {
       const ScenePrimitive& prim = scene.primitives[i];
       // The triangles are not needed by the scene any more: moved into the mesh.
@@ -210,7 +215,8 @@ Runner add_render_command(CLI::App& app) {
   add_vector3_option(*cmd, "--background", args->background, "Background color, linear RGB: R,G,B or R G B (default 0,0,0)");
   cmd->add_flag("--cull-back-faces", args->cull_back_faces, "Skip back faces of single-sided materials");
   cmd->add_option("--specular", args->specular,
-                  "Specular of linear and area lights: peak (default, the paper's), neighborhood:K, exact or none");
+                  "Specular: exact (default, the lobe integrated with the light's falloff), exact-no-falloff (the paper's "
+                  "eq. 6), peak or neighborhood:K (the lobe's maximum over linear and area lights; fast) or none");
   cmd->add_option("--view", args->view,
                   "shaded (default); wireframe: triangle edges over the shading; normals: world normals as "
                   "colours, 0.5 n + 0.5, unlit, written without sRGB encoding or exposure (docs/rasterizer.md)")

@@ -10,6 +10,10 @@ SpecularOptions parse_specular(const std::string& text) {
   SpecularOptions s;
   if (text == "peak") s.method = SpecularMethod::kPeak;
   else if (text == "exact") s.method = SpecularMethod::kExact;
+  else if (text == "exact-no-falloff") {
+    s.method = SpecularMethod::kExact;
+    s.falloff = SpecularFalloff::kNone;
+  }
   else if (text == "none") s.method = SpecularMethod::kNone;
   else if (text.rfind("neighborhood:", 0) == 0) {
     s.method = SpecularMethod::kNeighborhood;
@@ -22,7 +26,7 @@ SpecularOptions parse_specular(const std::string& text) {
       throw UsageError("--specular: neighborhood:K needs an integer K in [1, 1024], got \"" + k + "\"");
     }
   } else {
-    throw UsageError("--specular: expected peak, neighborhood:K, exact or none, got \"" + text + "\"");
+    throw UsageError("--specular: expected exact, exact-no-falloff, peak, neighborhood:K or none, got \"" + text + "\"");
   }
   return s;
 }

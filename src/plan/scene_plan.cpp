@@ -168,7 +168,8 @@ const char* specular_kernel(const ShadeOptions& o) {
     case SpecularMethod::kNone: return "none";
     case SpecularMethod::kPeak: return "peak";
     case SpecularMethod::kNeighborhood: return "neighborhood";
-    case SpecularMethod::kExact: return "exact";
+    case SpecularMethod::kExact:
+      return o.specular.falloff == SpecularFalloff::kAsDiffuse ? "exact" : "exact-no-falloff";
   }
   return "?";
 }

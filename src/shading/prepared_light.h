@@ -106,9 +106,9 @@ PreparedLight<T> prepare_light(const LightSource& light) {
 template <class T, class K>
 Response<T> shade_kernel(const K& k, const ShadingPoint<T>& sp, const ShadeOptions& options) {
   const bool spec = options.with_specular && options.specular.method != SpecularMethod::kNone;
-  if constexpr (std::is_same_v<K, PointLight<T>>) return shade_point(k, sp, spec);
+  if constexpr (std::is_same_v<K, PointLight<T>>) return shade_point(k, sp, spec, options.specular.falloff);
   else if constexpr (std::is_same_v<K, DirectionalLight<T>>) return shade_directional(k, sp, spec);
-  else if constexpr (std::is_same_v<K, SpotLight<T>>) return shade_spot(k, sp, spec);
+  else if constexpr (std::is_same_v<K, SpotLight<T>>) return shade_spot(k, sp, spec, options.specular.falloff);
   else {
     SpecularOptions s = options.specular;
     if (!spec) s.method = SpecularMethod::kNone;

@@ -137,13 +137,24 @@ TEST_CASE("probe prints the point light's value at each point, 17 digits") {
   std::getline(in, row1);
   CHECK(header == "index,diffuse,specular");
   // Hand values: |L| = 5, cos = 4/5 (normal normalized by vlit), intensity 2 (colour ignored):
-  // diffuse = 2 * 0.8 / 25, specular = 2 * 0.8^8 (Rv = +Z).
+  // diffuse = 2 * 0.8 / 25, specular = 2 * 0.8^8 / 25 (Rv = +Z; the default --specular exact has
+  // the diffuse's falloff 1/|L|^2, docs/conventions.md).
   double index = -1, diffuse = -1, specular = -1;
   REQUIRE(std::sscanf(row0.c_str(), "%lf,%lf,%lf", &index, &diffuse, &specular) == 3);
   CHECK(diffuse == doctest::Approx(2 * 0.8 / 25).epsilon(1e-15));
-  CHECK(specular == doctest::Approx(2 * std::pow(0.8, 8)).epsilon(1e-14));
+  CHECK(specular == doctest::Approx(2 * std::pow(0.8, 8) / 25).epsilon(1e-14));
   CHECK(row1 == "1,0,0");  // facing away: nothing
   CHECK(row0.size() > 20);   // 17 significant digits, not a rounded print
+  // The paper's eq. 6, by name: no falloff on the specular, 2 * 0.8^8.
+  const auto paper = run_command(kVlit + " probe --specular exact-no-falloff --lights " + q(lights.string()) +
+                                 " --points " + q(points.string()));
+  REQUIRE_MESSAGE(paper.exit_code == 0, paper.err);
+  std::istringstream paper_in(paper.out);
+  std::getline(paper_in, header);
+  std::getline(paper_in, row0);
+  REQUIRE(std::sscanf(row0.c_str(), "%lf,%lf,%lf", &index, &diffuse, &specular) == 3);
+  CHECK(diffuse == doctest::Approx(2 * 0.8 / 25).epsilon(1e-15));
+  CHECK(specular == doctest::Approx(2 * std::pow(0.8, 8)).epsilon(1e-14));
 
   const auto bad = dir / "bad.csv";
   std::ofstream(bad) << "px,py,pz,nx,ny,nz,ex,ey,ez,m\n0,0,0,0,0,1,0,0,1\n";
@@ -246,7 +257,7 @@ TEST_CASE("--explain prints the plan and per-stage times") {
   CHECK(render.out.find("rasterize") != std::string::npos);
   const auto bad = run_command(kVlit + " render " + q(kDemo) + " -o " + q((dir / "x.png").string()) + " --specular shiny");
   CHECK(bad.exit_code == 2);  // a value the option does not allow: a usage error
-  CHECK(bad.err.find("--specular: expected peak, neighborhood:K, exact or none") != std::string::npos);
+  CHECK(bad.err.find("--specular: expected exact, exact-no-falloff, peak, neighborhood:K or none") != std::string::npos);
 }
 
 TEST_CASE("bake output is byte-identical with OMP_NUM_THREADS=1 and 2 (float batch kernels)") {
@@ -376,4 +387,41 @@ TEST_CASE("--target COLOR_n on a primitive without the lower colour sets adds th
   for (const auto& mesh : load_gltf_file(custom).model.meshes)
     for (const auto& prim : mesh.primitives) CHECK(prim.attributes.count("COLOR_0") == 0);
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("render says once when the specular dominates, and not with the default exact specular") {
+  // A rough metal floor (m = 1, kd = ks = 1) under a tube light 100 units up: its diffuse is
+  // ~1e-4 per unit intensity. The paper's peak (the lobe's maximum, no falloff) is ~0.5: it
+  // dominates everywhere; the default integral carries the same 1/|L|^2 and does not.
+  const auto dir = vlit::test::temp_dir("cli-specular-dominates");
+  vlit::test::GltfBuilder b;
+  std::vector<float> positions, normals;
+  std::vector<std::uint32_t> indices;
+  constexpr int kCells = 8;
+  for (int j = 0; j <= kCells; ++j)
+    for (int i = 0; i <= kCells; ++i) {
+      positions.insert(positions.end(), {float(i - kCells / 2), 0.0f, float(j - kCells / 2)});
+      normals.insert(normals.end(), {0.0f, 1.0f, 0.0f});
+    }
+  for (std::uint32_t j = 0; j < kCells; ++j)
+    for (std::uint32_t i = 0; i < kCells; ++i) {
+      const std::uint32_t a = j * (kCells + 1) + i, c = a + kCells + 2;
+      indices.insert(indices.end(), {a, c, a + 1, a, a + kCells + 1, c});
+    }
+  b.add_node(b.add_mesh(positions, normals, indices, TINYGLTF_MODE_TRIANGLES, b.add_material({1, 1, 1, 1}, 1.0, 1.0)));
+  const std::string scene = b.write((dir / "floor.gltf").string());
+  const auto lights = dir / "lights.json";
+  std::ofstream(lights) << R"({"lights": [{"type": "linear", "from": [-5, 100, 0], "to": [5, 100, 0], "intensity": 1}]})";
+  const std::string base = kVlit + " render " + q(scene) + " --lights " + q(lights.string()) + " -o " +
+                           q((dir / "floor.png").string()) + " --width 32 --height 24 --samples 1 --quiet";
+  const auto peak = run_command(base + " --specular peak");
+  REQUIRE_MESSAGE(peak.exit_code == 0, peak.err);
+  const std::string needle = "the specular is over 10x the diffuse or saturates at ";
+  const auto first = peak.err.find(needle);
+  CHECK_MESSAGE(first != std::string::npos, peak.err);
+  CHECK(peak.err.find(needle, first + 1) == std::string::npos);  // once
+  CHECK(peak.err.find("--specular exact integrates the lobe") != std::string::npos);
+  const auto exact = run_command(base);
+  REQUIRE_MESSAGE(exact.exit_code == 0, exact.err);
+  CHECK_MESSAGE(exact.err.find(needle) == std::string::npos, exact.err);
 }

@@ -17,12 +17,15 @@ ShadingPoint<double> up_point_seen_from_above() {
 }
 }  // namespace
 
-TEST_CASE("point light straight above: diffuse = 1/d^n, specular = 1") {
+TEST_CASE("point light straight above: diffuse = 1/d^n, specular = 1/d^n (eq. 6 without falloff: 1)") {
   const auto sp = up_point_seen_from_above();
   for (double n : {0.0, 1.0, 2.0, 3.0, 1.5}) {
     const Response<double> r = shade_point(PointLight<double>{{0, 0, 2}, n}, sp, true);
     CHECK(r.diffuse == doctest::Approx(1.0 / std::pow(2.0, n)).epsilon(1e-15));
-    CHECK(r.specular == doctest::Approx(1.0).epsilon(1e-15));
+    CHECK(r.specular == doctest::Approx(1.0 / std::pow(2.0, n)).epsilon(1e-15));
+    const Response<double> paper = shade_point(PointLight<double>{{0, 0, 2}, n}, sp, true, SpecularFalloff::kNone);
+    CHECK(paper.diffuse == r.diffuse);
+    CHECK(paper.specular == doctest::Approx(1.0).epsilon(1e-15));
   }
 }
 
@@ -31,8 +34,9 @@ TEST_CASE("point light at a 3-4-5 triangle: cos = 4/5, |L| = 5") {
   const PointLight<double> light{{3, 0, 4}, 2};
   const Response<double> r = shade_point(light, sp, true);
   CHECK(r.diffuse == doctest::Approx(0.8 / 25).epsilon(1e-15));
-  // Rv = +Z, L̂ = (0.6, 0, 0.8): specular = 0.8^8.
-  CHECK(r.specular == doctest::Approx(std::pow(0.8, 8)).epsilon(1e-14));
+  // Rv = +Z, L̂ = (0.6, 0, 0.8): specular = 0.8^8 / 5^2 (the diffuse's falloff), 0.8^8 without it.
+  CHECK(r.specular == doctest::Approx(std::pow(0.8, 8) / 25).epsilon(1e-14));
+  CHECK(shade_point(light, sp, true, SpecularFalloff::kNone).specular == doctest::Approx(std::pow(0.8, 8)).epsilon(1e-14));
   // Linear falloff n = 1: cos / |L|.
   CHECK(shade_point(PointLight<double>{{3, 0, 4}, 1}, sp, false).diffuse == doctest::Approx(0.8 / 5).epsilon(1e-15));
 }
@@ -71,6 +75,9 @@ TEST_CASE("spot light: point light inside the inner cone, dark outside the outer
   // Axis straight at P: full point light.
   spot.direction = {0, 0, -1};
   CHECK(shade_spot(spot, sp, false).diffuse == doctest::Approx(0.25).epsilon(1e-15));
+  // Specular (Rv at the light, lobe 1): the point light's falloff 1/2^2, or none (eq. 6).
+  CHECK(shade_spot(spot, sp, true).specular == doctest::Approx(0.25).epsilon(1e-15));
+  CHECK(shade_spot(spot, sp, true, SpecularFalloff::kNone).specular == doctest::Approx(1.0).epsilon(1e-15));
   // Axis tilted by 0.3 rad: P is at angle 0.3, between the cones.
   spot.direction = {std::sin(0.3), 0, -std::cos(0.3)};
   const double s = (std::cos(0.3) - std::cos(0.4)) / (std::cos(0.2) - std::cos(0.4));
@@ -92,4 +99,20 @@ TEST_CASE("glTF range: the KHR_lights_punctual window 1 - (d/r)^4, zero beyond")
   CHECK(shade(light, sp, options).diffuse == doctest::Approx(0.25 * 15.0 / 16.0).epsilon(1e-15));
   l.range = 1.5;  // beyond range
   CHECK(shade(prepare_light<double>(l), sp, options).diffuse == 0.0);
+}
+
+TEST_CASE("the specular falloff option reaches point and spot lights through shade()") {
+  const auto sp = up_point_seen_from_above();  // Rv = +Z, lobe 1 at a light straight above
+  for (LightType type : {LightType::kPoint, LightType::kSpot}) {
+    LightSource l;
+    l.type = type;
+    l.position = {0, 0, 4};
+    l.direction = {0, 0, -1};
+    l.falloff = 2;
+    ShadeOptions options;  // default: exact, with the diffuse's falloff
+    const PreparedLight<double> light = prepare_light<double>(l);
+    CHECK(shade(light, sp, options).specular == doctest::Approx(1.0 / 16).epsilon(1e-15));
+    options.specular.falloff = SpecularFalloff::kNone;  // --specular exact-no-falloff
+    CHECK(shade(light, sp, options).specular == doctest::Approx(1.0).epsilon(1e-15));
+  }
 }

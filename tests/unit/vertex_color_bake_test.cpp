@@ -194,14 +194,25 @@ TEST_CASE("--specular-eye: one triangle, specular folded into the multiplier by 
   const GltfFile baked = load_gltf_file(out);
   const auto c = read_accessor_as_doubles(baked.model, baked.model.meshes[0].primitives[0].attributes.at("COLOR_0"), "out");
   const double albedo[3] = {0.5, 0.25, 1};
-  // Vertex 0 at the origin: L = V = Rv = +Z; diffuse 2 / 2^2 = 0.5, specular Ip ks (Rv.L)^m = 0.08.
-  for (int ch = 0; ch < 3; ++ch) CHECK(c[ch] == doctest::Approx(0.5 + 0.08 / albedo[ch]).epsilon(1e-6));
-  // Vertex 1 at (1, 0, 0): L = (-1, 0, 2)/sqrt 5, V = (-1, 0, 5)/sqrt 26, Rv = (1, 0, 5)/sqrt 26,
-  // Rv.L = 9 / sqrt 130; diffuse 2 (2/sqrt 5) / 5, specular 0.08 (81/130).
-  const double diffuse1 = 2 * (2 / std::sqrt(5.0)) / 5, specular1 = 0.08 * 81.0 / 130.0;
+  // Vertex 0 at the origin: L = V = Rv = +Z; diffuse 2 / 2^2 = 0.5, specular Ip ks (Rv.L)^m / |L|^2
+  // = 0.08 / 4 (the default specular carries the diffuse's falloff, docs/conventions.md).
+  for (int ch = 0; ch < 3; ++ch) CHECK(c[ch] == doctest::Approx(0.5 + 0.02 / albedo[ch]).epsilon(1e-6));
+  // Vertex 1 at (1, 0, 0): L = (-1, 0, 2), |L|^2 = 5, V = (-1, 0, 5)/sqrt 26, Rv = (1, 0, 5)/sqrt 26,
+  // Rv.L̂ = 9 / sqrt 130; diffuse 2 (2/sqrt 5) / 5, specular 0.08 (81/130) / 5.
+  const double diffuse1 = 2 * (2 / std::sqrt(5.0)) / 5, specular1 = 0.08 * 81.0 / 130.0 / 5;
   for (int ch = 0; ch < 3; ++ch) CHECK(c[4 + ch] == doctest::Approx(diffuse1 + specular1 / albedo[ch]).epsilon(1e-6));
   // What a viewer shows, stored x base = kd diffuse + ks specular:
-  CHECK(c[4] * 0.5 == doctest::Approx(0.5 * diffuse1 + 0.04 * 2 * 81.0 / 130.0).epsilon(1e-6));
+  CHECK(c[4] * 0.5 == doctest::Approx(0.5 * diffuse1 + 0.04 * 2 * 81.0 / 130.0 / 5).epsilon(1e-6));
+
+  // The paper's eq. 6 by name (--specular exact-no-falloff): no 1/|L|^2 on the specular.
+  options.specular.falloff = SpecularFalloff::kNone;
+  const std::string paper = (dir / "paper.glb").string();
+  bake_file(in, paper, options);
+  const GltfFile pb = load_gltf_file(paper);
+  const auto cp = read_accessor_as_doubles(pb.model, pb.model.meshes[0].primitives[0].attributes.at("COLOR_0"), "paper");
+  for (int ch = 0; ch < 3; ++ch) CHECK(cp[ch] == doctest::Approx(0.5 + 0.08 / albedo[ch]).epsilon(1e-6));
+  for (int ch = 0; ch < 3; ++ch) CHECK(cp[4 + ch] == doctest::Approx(diffuse1 + 5 * specular1 / albedo[ch]).epsilon(1e-6));
+  options.specular.falloff = SpecularFalloff::kAsDiffuse;
 
   // Without an eye, no specular: the diffuse alone.
   options.specular_eye.reset();

@@ -144,9 +144,12 @@ void check_config(const Config& c, bool stiff, Table& table) {
   record(table, "specular peak", is_float, stiff, c.name, double(vp), peak_ref, 1e-15L);
   SpecularOptions exact{SpecularMethod::kExact};
   const T ve = shade_linear(x.light, x.sp, exact).specular;
-  const long double exact_ref = ref_specular_exact(x);
+  // P on the segment: ∫ ds / s^2 diverges at P; the kernels define the value as 0 there, as for the
+  // diffuse (linear_specular_exact.h).
+  const long double exact_ref = on_segment ? 0.0L : ref_specular_exact(x);
+  // Floor: the lobe's maximum times ∫ 1/|L|^n dt, the size of the falloff-weighted integral.
   record(table, "specular exact", is_float, stiff, c.name, double(ve), exact_ref,
-         (is_float ? 1e-7L : 1e-12L) * std::max(peak_ref, 1e-300L));
+         (is_float ? 1e-7L : 1e-12L) * std::max(peak_ref * (on_segment ? 1.0L : ref_unclipped(x)), 1e-300L));
   SpecularOptions nb{SpecularMethod::kNeighborhood};
   const T vn = shade_linear(x.light, x.sp, nb).specular;
   CHECK(std::isfinite(double(vn)));

@@ -41,10 +41,11 @@ Config half_space_case(const std::string& where, double m) {
   return c;
 }
 
-double exact_specular(const Config& c, double tol) {
+double exact_specular(const Config& c, double tol, SpecularFalloff falloff = SpecularFalloff::kAsDiffuse) {
   const Typed<double> x = typed<double>(c, 2);
   SpecularOptions o{SpecularMethod::kExact};
   o.exact_tolerance = tol;
+  o.falloff = falloff;
   return shade_linear(x.light, x.sp, o).specular;
 }
 
@@ -66,17 +67,27 @@ TEST_CASE("m -> 0 continuity: exact specular at m = 0, 1e-12, 1, 1e4 in front of
   }
 }
 
-TEST_CASE("m -> 0 continuity: the values at m = 0 and m = 1e-12 agree, and equal the visible length in front") {
-  // Straddling: the part in front is x in [-0.2, 2] of [-2, 2], i.e. 2.2 / 4 of the unit t range.
+TEST_CASE("m -> 0 continuity: the values at m = 0 and m = 1e-12 agree, and equal the part in front") {
+  // Straddling: the part in front is x in [-0.2, 2] of [-2, 2] (t = (x + 2) / 4) at height 1.
+  // With the falloff 1/|L|^2 = 1/(1 + x^2): (atan 2 + atan 0.2) / 4; without it (the paper's
+  // form, exact-no-falloff), its length 2.2 / 4 of the unit t range.
   const double m0 = exact_specular(half_space_case("straddling", 0), 1e-10);
   const double m12 = exact_specular(half_space_case("straddling", 1e-12), 1e-10);
-  CHECK(m0 == doctest::Approx(2.2 / 4).epsilon(1e-12));
+  CHECK(m0 == doctest::Approx((std::atan(2.0) + std::atan(0.2)) / 4).epsilon(1e-12));
   CHECK(std::abs(m12 - m0) <= 1e-10 * m0);
+  const double paper0 = exact_specular(half_space_case("straddling", 0), 1e-10, SpecularFalloff::kNone);
+  const double paper12 = exact_specular(half_space_case("straddling", 1e-12), 1e-10, SpecularFalloff::kNone);
+  CHECK(paper0 == doctest::Approx(2.2 / 4).epsilon(1e-12));
+  CHECK(std::abs(paper12 - paper0) <= 1e-10 * paper0);
   // Behind: 0 at every m, including m = 0 (formerly the whole light, 1).
   CHECK(exact_specular(half_space_case("behind", 0), 1e-10) == 0);
   CHECK(exact_specular(half_space_case("behind", 1e-12), 1e-10) == 0);
-  // Front: the whole light at m = 0.
-  CHECK(exact_specular(half_space_case("front", 0), 1e-10) == doctest::Approx(1).epsilon(1e-14));
+  CHECK(exact_specular(half_space_case("behind", 0), 1e-10, SpecularFalloff::kNone) == 0);
+  // Front: the whole light at m = 0: x in [-1, 1] at distance^2 x^2 + 1.09 from P, t = (x + 1) / 2,
+  // so (1/2) ∫ dx / (x^2 + 1.09) = atan(1 / sqrt 1.09) / sqrt 1.09; without falloff, 1.
+  const double r = std::sqrt(1.09);
+  CHECK(exact_specular(half_space_case("front", 0), 1e-10) == doctest::Approx(std::atan(1 / r) / r).epsilon(1e-13));
+  CHECK(exact_specular(half_space_case("front", 0), 1e-10, SpecularFalloff::kNone) == doctest::Approx(1).epsilon(1e-14));
   // The peak at m = 0 is the lobe's maximum over the light: 1 if any of it is in front, else 0.
   const Typed<double> behind = typed<double>(half_space_case("behind", 0), 2);
   const Typed<double> straddling = typed<double>(half_space_case("straddling", 0), 2);

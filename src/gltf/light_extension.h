@@ -1,0 +1,42 @@
+// What the node-instanced light extensions (EXT_lights_area, gltf_area_lights.h;
+// VLIT_lights_linear, gltf_linear_lights.h) share: a root `extensions.<name>.lights[]` array of
+// definitions, each with a name, a colour and an intensity, and nodes that instance one by index
+// with `extensions.<name>.light`. Errors are InputErrors naming the file and the JSON path.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <tiny_gltf.h>
+
+#include "core/vec3.h"
+#include "gltf/extension_object.h"
+#include "gltf/gltf_file.h"
+
+namespace vlit {
+
+// The emission of a light definition: colour components >= 0, intensity >= 0 in the extension's
+// unit (nits for an area light, cd per metre for a tube).
+struct LightEmission {
+  std::string name;
+  Vec3d color{1, 1, 1};
+  double intensity = 1;
+};
+
+// Reads "name", "color" and "intensity" (default `default_intensity`, unit `unit` for the message).
+LightEmission read_light_emission(ExtensionObject& light, double default_intensity, const std::string& unit);
+
+// The root object `extensions.<extension>` of the file; nothing when the file has none.
+std::optional<ExtensionObject> root_light_extension(const GltfFile& file, const char* extension);
+
+// "nodes[i].extensions.<extension>", the JSON path of a node's reference.
+std::string light_reference_path(int node_index, const char* extension);
+
+// The definition index a node's reference names, checked against the `count` definitions.
+int referenced_light(ExtensionObject& reference, std::size_t count, const char* extension);
+
+// The placed light's name: the definition's, else the node's, else file and JSON path.
+std::string placed_light_name(const LightEmission& emission, const tinygltf::Node& node, const std::string& file,
+                              const std::string& reference_path);
+
+}  // namespace vlit

@@ -63,9 +63,7 @@ std::optional<LightSource> place_area_light(const GltfFile& file, const std::vec
   const tinygltf::Node& node = file.model.nodes[node_index];
   ExtensionObject ref(node.extensions.at(kExtLightsArea), file.path, node_path(node_index));
   const AreaLightDefinition& d = definitions[referenced_light(ref, definitions.size(), kExtLightsArea)];
-  LightSource l;
-  l.name = placed_light_name(d.emission, node, file.path, node_path(node_index));
-  l.color = d.emission.color;
+  LightSource l = placed_light(d.emission, node, file.path, node_path(node_index));
   l.intensity = d.emission.intensity;
   l.two_sided = false;
   if (d.rect) {

@@ -41,10 +41,8 @@ std::optional<LightSource> place_linear_light(const GltfFile& file, const std::v
   ExtensionObject ref(node.extensions.at(kVlitLightsLinear), file.path, node_path(node_index));
   const LinearLightDefinition& d = definitions[referenced_light(ref, definitions.size(), kVlitLightsLinear)];
   reject_unknown(ref);
-  LightSource l;
+  LightSource l = placed_light(d.emission, node, file.path, node_path(node_index));
   l.type = LightType::kLinear;
-  l.name = placed_light_name(d.emission, node, file.path, node_path(node_index));
-  l.color = d.emission.color;
   l.falloff = d.falloff;
   l.from = world.apply_point(d.from);
   l.to = world.apply_point(d.to);

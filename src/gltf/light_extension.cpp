@@ -31,9 +31,12 @@ int referenced_light(ExtensionObject& reference, std::size_t count, const char* 
   return index;
 }
 
-std::string placed_light_name(const LightEmission& emission, const tinygltf::Node& node, const std::string& file,
-                              const std::string& reference_path) {
-  return !emission.name.empty() ? emission.name : !node.name.empty() ? node.name : file + ": " + reference_path;
+LightSource placed_light(const LightEmission& emission, const tinygltf::Node& node, const std::string& file,
+                         const std::string& reference_path) {
+  LightSource l;
+  l.name = !emission.name.empty() ? emission.name : !node.name.empty() ? node.name : file + ": " + reference_path;
+  l.color = emission.color;
+  return l;
 }
 
 }  // namespace vlit

@@ -12,6 +12,7 @@
 #include "core/vec3.h"
 #include "gltf/extension_object.h"
 #include "gltf/gltf_file.h"
+#include "scene/light_source.h"
 
 namespace vlit {
 
@@ -35,8 +36,9 @@ std::string light_reference_path(int node_index, const char* extension);
 // The definition index a node's reference names, checked against the `count` definitions.
 int referenced_light(ExtensionObject& reference, std::size_t count, const char* extension);
 
-// The placed light's name: the definition's, else the node's, else file and JSON path.
-std::string placed_light_name(const LightEmission& emission, const tinygltf::Node& node, const std::string& file,
-                              const std::string& reference_path);
+// The light a node instances, before its shape: named by the definition, else by the node, else
+// by file and JSON path; the definition's colour. (The intensity depends on the shape.)
+LightSource placed_light(const LightEmission& emission, const tinygltf::Node& node, const std::string& file,
+                         const std::string& reference_path);
 
 }  // namespace vlit

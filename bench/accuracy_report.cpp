@@ -225,7 +225,7 @@ int main(int argc, char** argv) {
   LinearSections lin = linear_report(o);
   AreaSections area = area_report(o);
   DiskSections disk = disk_report(o);
-  std::fprintf(stderr, "[%5.1f s] end to end ...\n", elapsed_s());
+  progress("end to end");
   const EndToEnd e2e = end_to_end(o);
   const double total_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 

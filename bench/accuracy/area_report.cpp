@@ -171,7 +171,7 @@ AreaSections area_report(const Options& o) {
   const int count = o.quick ? 8 : 256;
   const std::vector<AreaCase> ord = ordinary_area_cases(count);
   const std::vector<NamedAreaStiff> named = stiff_area_cases();
-  std::fprintf(stderr, "[%5.1f s] area: references for %d ordinary cases ...\n", elapsed_s(), count);
+  progress("area: references for " + std::to_string(count) + " ordinary cases");
   const CaseSet<AreaX> od = area_set(ord, false);
   const CaseSet<AreaX> sd_set = area_stiff_set(named, false);
   out.diffuse = make_section("area-diffuse", "Area light, diffuse", count, sd_set);
@@ -194,7 +194,7 @@ AreaSections area_report(const Options& o) {
              &sd_set, mc, kAlways);
     }
 
-  std::fprintf(stderr, "[%5.1f s] area specular references ...\n", elapsed_s());
+  progress("area specular references");
   const CaseSet<AreaX> os = area_set(ord, true);
   const CaseSet<AreaX> ss_set = area_stiff_set(named, true);
   out.specular = make_section("area-specular", "Area light, specular", count, ss_set);

@@ -137,7 +137,7 @@ DiskSections disk_report(const Options& o) {
   const std::vector<DiskQuery> ord = ordinary_disk_cases(count);
   const auto named = stiff_disk_cases(false);
   const auto named_s = stiff_disk_cases(true);
-  std::fprintf(stderr, "[%5.1f s] disk: references for %d ordinary cases ...\n", elapsed_s(), count);
+  progress("disk: references for " + std::to_string(count) + " ordinary cases");
   const CaseSet<DiskX> od = disk_set(ord, false), os = disk_set(ord, true);
   const CaseSet<DiskX> sd = disk_stiff_set(named, false), ss = disk_stiff_set(named_s, true);
   out.diffuse = make_section("disk-diffuse", "Disk light, diffuse", count, sd);

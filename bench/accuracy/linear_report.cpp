@@ -211,14 +211,14 @@ LinearSections linear_report(const Options& o) {
   const int count = o.quick ? 24 : 1024;
   const std::vector<Config> ord = ordinary_linear_configs(count);
   const std::vector<NamedStiff> named = stiff_linear_cases();
-  std::fprintf(stderr, "[%5.1f s] linear: references for %d ordinary cases ...\n", elapsed_s(), count);
+  progress("linear: references for " + std::to_string(count) + " ordinary cases");
   std::map<double, CaseSet<LinX>> diff;
   for (double n : {0.0, 1.0, 2.0, 3.0, 1.5}) diff[n] = linear_set(ord, std::vector<double>(ord.size(), n), LinearQuantity::kDiffuse);
   const CaseSet<LinX> stiff_d = linear_stiff_set(named, LinearQuantity::kDiffuse);
 
   out.diffuse = make_section("linear-diffuse", "Linear light, diffuse", count, stiff_d);
   Section& sd = out.diffuse;
-  std::fprintf(stderr, "[%5.1f s] linear diffuse methods ...\n", elapsed_s());
+  progress("linear diffuse methods");
   auto is_integer = [](const auto& x) { const double n = double(x.light.falloff); return n == 0 || n == 1 || n == 2 || n == 3; };
   auto closed = [](const auto& x, std::size_t) {
     return linear_diffuse_closed(x.light, x.sp, int(x.light.falloff));
@@ -263,7 +263,7 @@ LinearSections linear_report(const Options& o) {
     }
 
   // Specular.
-  std::fprintf(stderr, "[%5.1f s] linear specular references ...\n", elapsed_s());
+  progress("linear specular references");
   const CaseSet<LinX> sp = linear_set(ord, std::vector<double>(ord.size(), 2.0), LinearQuantity::kSpecular);
   const CaseSet<LinX> sp_max = linear_set(ord, std::vector<double>(ord.size(), 2.0), LinearQuantity::kLobeMax);
   const CaseSet<LinX> stiff_s = linear_stiff_set(named, LinearQuantity::kSpecular);

@@ -214,6 +214,9 @@ inline double elapsed_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// "[  t s] what ..." on stderr: where a long report run is.
+inline void progress(const std::string& what) { std::fprintf(stderr, "[%5.1f s] %s ...\n", elapsed_s(), what.c_str()); }
+
 // Runs one method on the ordinary set (timed) and, if given, on the stiff set (errors only).
 template <template <class> class X, class F, class A>
 void method(Section& sec, const Options& o, const std::string& key, const std::string& name, const std::string& set,

@@ -31,12 +31,12 @@ double polygon_area(const std::vector<Vec3d>& polygon) {
 }  // namespace
 
 std::vector<AreaLightDefinition> read_area_light_definitions(const GltfFile& file, std::vector<std::string>& warnings) {
-  std::vector<AreaLightDefinition> out;
-  std::optional<ExtensionObject> root = root_light_extension(file, kExtLightsArea);
-  if (!root) return out;
-  for (ExtensionObject& light : root->objects("lights")) {
-    AreaLightDefinition d;
-    d.emission = read_light_emission(light, 1000.0, "nits");
+  // The draft may grow: unknown properties are warnings.
+  auto warn_unread = [&](const ExtensionObject& object) {
+    for (const std::string& k : object.unread_keys())
+      warnings.push_back(file.path + ": " + object.path() + "." + k + ": unknown property; ignored");
+  };
+  auto read_shape = [&](ExtensionObject& light, AreaLightDefinition& d) {
     const std::string type = light.string("type");
     if (type != "rect" && type != "disk") light.fail("type", "unknown area light type \"" + type + "\" (expected rect or disk)");
     d.rect = type == "rect";
@@ -46,24 +46,17 @@ std::vector<AreaLightDefinition> read_area_light_definitions(const GltfFile& fil
       ExtensionObject rect = light.object("rect");
       d.aspect = rect.number("aspect", 1.0);
       if (!(d.aspect > 0)) rect.fail("aspect", "aspect must be > 0");
-      for (const std::string& k : rect.unread_keys())
-        warnings.push_back(file.path + ": " + rect.path() + "." + k + ": unknown property; ignored");
+      warn_unread(rect);
     }
-    for (const std::string& k : light.unread_keys())
-      warnings.push_back(file.path + ": " + light.path() + "." + k + ": unknown property; ignored");
-    out.push_back(d);
-  }
-  for (const std::string& k : root->unread_keys())
-    warnings.push_back(file.path + ": " + root->path() + "." + k + ": unknown property; ignored");
-  return out;
+  };
+  return read_light_definitions<AreaLightDefinition>(file, kExtLightsArea, 1000.0, "nits", read_shape, warn_unread);
 }
 
 std::optional<LightSource> place_area_light(const GltfFile& file, const std::vector<AreaLightDefinition>& definitions,
                                             int node_index, const Affine& world, std::vector<std::string>& warnings) {
-  const tinygltf::Node& node = file.model.nodes[node_index];
-  ExtensionObject ref(node.extensions.at(kExtLightsArea), file.path, node_path(node_index));
+  ExtensionObject ref(file.model.nodes[node_index].extensions.at(kExtLightsArea), file.path, node_path(node_index));
   const AreaLightDefinition& d = definitions[referenced_light(ref, definitions.size(), kExtLightsArea)];
-  LightSource l = placed_light(d.emission, node, file.path, node_path(node_index));
+  LightSource l = placed_light(d.emission, file, node_index, kExtLightsArea);
   l.intensity = d.emission.intensity;
   l.two_sided = false;
   if (d.rect) {

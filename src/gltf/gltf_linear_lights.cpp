@@ -18,30 +18,23 @@ void reject_unknown(const ExtensionObject& object) {
 }  // namespace
 
 std::vector<LinearLightDefinition> read_linear_light_definitions(const GltfFile& file) {
-  std::vector<LinearLightDefinition> out;
-  std::optional<ExtensionObject> root = root_light_extension(file, kVlitLightsLinear);
-  if (!root) return out;
-  for (ExtensionObject& light : root->objects("lights")) {
-    LinearLightDefinition d;
-    d.emission = read_light_emission(light, 1.0, "cd per metre");
+  auto read_shape = [](ExtensionObject& light, LinearLightDefinition& d) {
     d.from = light.vec3("from");
     d.to = light.vec3("to");
     d.falloff = light.number("falloff", 2.0);
     if (d.falloff < 0 || d.falloff > 3) light.fail("falloff", "falloff must be in [0, 3]");
-    reject_unknown(light);
-    out.push_back(d);
-  }
-  reject_unknown(*root);
-  return out;
+  };
+  // Our own extension: an unknown property is an error (a typo would silently change the light).
+  return read_light_definitions<LinearLightDefinition>(file, kVlitLightsLinear, 1.0, "cd per metre", read_shape,
+                                                       reject_unknown);
 }
 
 std::optional<LightSource> place_linear_light(const GltfFile& file, const std::vector<LinearLightDefinition>& definitions,
                                               int node_index, const Affine& world, std::vector<std::string>& warnings) {
-  const tinygltf::Node& node = file.model.nodes[node_index];
-  ExtensionObject ref(node.extensions.at(kVlitLightsLinear), file.path, node_path(node_index));
+  ExtensionObject ref(file.model.nodes[node_index].extensions.at(kVlitLightsLinear), file.path, node_path(node_index));
   const LinearLightDefinition& d = definitions[referenced_light(ref, definitions.size(), kVlitLightsLinear)];
   reject_unknown(ref);
-  LightSource l = placed_light(d.emission, node, file.path, node_path(node_index));
+  LightSource l = placed_light(d.emission, file, node_index, kVlitLightsLinear);
   l.type = LightType::kLinear;
   l.falloff = d.falloff;
   l.from = world.apply_point(d.from);

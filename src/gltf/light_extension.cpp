@@ -31,10 +31,12 @@ int referenced_light(ExtensionObject& reference, std::size_t count, const char* 
   return index;
 }
 
-LightSource placed_light(const LightEmission& emission, const tinygltf::Node& node, const std::string& file,
-                         const std::string& reference_path) {
+LightSource placed_light(const LightEmission& emission, const GltfFile& file, int node_index, const char* extension) {
+  const tinygltf::Node& node = file.model.nodes[node_index];
   LightSource l;
-  l.name = !emission.name.empty() ? emission.name : !node.name.empty() ? node.name : file + ": " + reference_path;
+  l.name = !emission.name.empty() ? emission.name
+           : !node.name.empty()    ? node.name
+                                   : file.path + ": " + light_reference_path(node_index, extension);
   l.color = emission.color;
   return l;
 }

@@ -71,6 +71,14 @@ class GltfSceneWriter {
     model_.defaultScene = 0;
   }
 
+  // Several materials, added in order; their indices in the same order.
+  template <std::size_t N>
+  std::array<int, N> materials(const MaterialSpec (&specs)[N]) {
+    std::array<int, N> out;
+    for (std::size_t i = 0; i < N; ++i) out[i] = material(specs[i]);
+    return out;
+  }
+
   int material(const MaterialSpec& spec) {
     tinygltf::Material m;
     m.name = spec.name;

@@ -36,10 +36,7 @@ struct AreaX {
 
 AreaCase round_area(AreaCase c) {
   for (Vec3d& q : c.polygon) q = to_float_grid(q);
-  c.p = to_float_grid(c.p);
-  c.n = to_float_grid(normalize(c.n));
-  c.rv = to_float_grid(normalize(c.rv));
-  c.m = double(float(c.m));
+  round_shading_inputs(c.p, c.n, c.rv, c.m);
   return c;
 }
 

@@ -31,6 +31,14 @@ inline Vec3d unit_on_float_grid(const Vec3d& v) {
   return static_cast<Vec3d>(f);
 }
 
+// A shading point's inputs on the float grid: P; N and Rv normalised, then rounded; m.
+inline void round_shading_inputs(Vec3d& p, Vec3d& n, Vec3d& rv, double& m) {
+  p = to_float_grid(p);
+  n = to_float_grid(normalize(n));
+  rv = to_float_grid(normalize(rv));
+  m = double(float(m));
+}
+
 inline Vec3d random_unit(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
   for (;;) {

@@ -36,10 +36,7 @@ DiskQuery round_disk(DiskQuery q) {
   q.center = to_float_grid(q.center);
   q.normal = to_float_grid(normalize(q.normal));
   q.radius = double(float(q.radius));
-  q.p = to_float_grid(q.p);
-  q.n = to_float_grid(normalize(q.n));
-  q.rv = to_float_grid(normalize(q.rv));
-  q.m = double(float(q.m));
+  round_shading_inputs(q.p, q.n, q.rv, q.m);
   return q;
 }
 

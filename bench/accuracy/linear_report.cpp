@@ -210,10 +210,10 @@ LinearSections linear_report(const Options& o) {
   LinearSections out;
   const int count = o.quick ? 24 : 1024;
   const std::vector<Config> ord = ordinary_linear_configs(count);
-  const std::vector<NamedStiff> named = stiff_linear_cases();
   progress("linear: references for " + std::to_string(count) + " ordinary cases");
-  std::map<double, CaseSet<LinX>> diff;
+  std::map<double, CaseSet<LinX>> diff;  // by falloff n
   for (double n : {0.0, 1.0, 2.0, 3.0, 1.5}) diff[n] = linear_set(ord, std::vector<double>(ord.size(), n), LinearQuantity::kDiffuse);
+  const std::vector<NamedStiff> named = stiff_linear_cases();
   const CaseSet<LinX> stiff_d = linear_stiff_set(named, LinearQuantity::kDiffuse);
 
   out.diffuse = make_section("linear-diffuse", "Linear light, diffuse", count, stiff_d);

@@ -17,6 +17,7 @@
 #include "case_grid.h"
 #include "report_format.h"
 #include "reports.h"
+#include "specular_rows.h"
 
 namespace vlit::bench::accuracy {
 namespace {
@@ -182,47 +183,20 @@ AreaSections area_report(const Options& o) {
   SpecularOptions none;
   none.method = SpecularMethod::kNone;
   method(sd, o, "contour", "contour closed form", "ordinary", "exact up to rounding", od, &sd_set, shade_with(none, false), kAlways);
-  for (bool strat : {false, true})
-    for (int n : {16, 64, 256, 1024, 4096}) {
-      auto mc = [n, strat](const auto& x, std::size_t i) {
-        return area_monte_carlo(x.sampler, x.sp, 0xa5ea + i, n, strat, false);
-      };
-      method(sd, o, std::string(strat ? "stratified-" : "mc-") + std::to_string(n), std::string(strat ? "stratified " : "Monte Carlo ") + std::to_string(n), "ordinary", "statistical", od,
-             &sd_set, mc, kAlways);
-    }
+  monte_carlo_rows(sd, o, "ordinary", "statistical", "statistical", {16, 64, 256, 1024, 4096}, od, &sd_set, [](int n, bool strat) {
+    return [n, strat](const auto& x, std::size_t i) { return area_monte_carlo(x.sampler, x.sp, 0xa5ea + i, n, strat, false); };
+  });
 
   progress("area specular references");
   const CaseSet<AreaX> os = area_set(ord, true);
   const CaseSet<AreaX> ss_set = area_stiff_set(named, true);
   out.specular = make_section("area-specular", "Area light, specular", count, ss_set);
   Section& ss = out.specular;
-  SpecularOptions peak;
-  peak.method = SpecularMethod::kPeak;
-  method(ss, o, "peak", "peak (default)", "m 1..1e3", "the lobe's maximum (not the integral)", os, &ss_set, shade_with(peak, true), kAlways);
-  for (int k : {1, 2, 4, 8, 16}) {
-    SpecularOptions nb;
-    nb.method = SpecularMethod::kNeighborhood;
-    nb.neighborhood_samples = k;
-    method(ss, o, "neighbourhood-" + std::to_string(k), "neighbourhood K=" + std::to_string(k), "m 1..1e3", "peak x covered fraction (not the integral)", os,
-           &ss_set, shade_with(nb, true), kAlways);
-  }
-  for (double tol : {1e-3, 1e-6, 1e-9}) {
-    SpecularOptions ex;
-    ex.method = SpecularMethod::kExact;
-    ex.exact_tolerance = tol;
-    char name[64], promise[96];
-    std::snprintf(name, sizeof name, "exact tol %g%s", tol, tol == 1e-9 ? " (opt. default)" : "");
-    std::snprintf(promise, sizeof promise, "relative %g (K15 vs G7 along the edges)", tol);
-    method(ss, o, "exact-" + tol_key(tol), name, "m 1..1e3", promise, os, &ss_set, shade_with(ex, true), kAlways);
-  }
-  for (bool strat : {false, true})
-    for (int n : {16, 256, 4096}) {
-      auto mc = [n, strat](const auto& x, std::size_t i) {
-        return area_monte_carlo(x.sampler, x.sp, 0xa5ea + i, n, strat, true);
-      };
-      method(ss, o, std::string(strat ? "stratified-" : "mc-") + std::to_string(n), std::string(strat ? "stratified " : "Monte Carlo ") + std::to_string(n), "m 1..1e3", "statistical", os,
-             &ss_set, mc, kAlways);
-    }
+  specular_method_rows(ss, o, os, &ss_set, "peak x covered fraction (not the integral)", {1e-3, 1e-6, 1e-9},
+                       "K15 vs G7 along the edges", [&](SpecularOptions opt) { return shade_with(opt, true); });
+  monte_carlo_rows(ss, o, "m 1..1e3", "statistical", "statistical", {16, 256, 4096}, os, &ss_set, [](int n, bool strat) {
+    return [n, strat](const auto& x, std::size_t i) { return area_monte_carlo(x.sampler, x.sp, 0xa5ea + i, n, strat, true); };
+  });
   return out;
 }
 

@@ -17,6 +17,7 @@
 #include "linear_light.h"
 #include "report_format.h"
 #include "reports.h"
+#include "specular_rows.h"
 
 namespace vlit::bench::accuracy {
 namespace {
@@ -249,18 +250,16 @@ LinearSections linear_report(const Options& o) {
     };
     method(sd, o, "fixed-gl-" + std::to_string(order), "fixed GL " + std::to_string(order) + " points", "n=2", "none (no error estimate)", d2, &stiff_d, gl, kAlways);
   }
-  for (bool strat : {false, true})
-    for (int n : {16, 64, 256, 1024, 4096}) {
-      auto mc = [n, strat](const auto& x, std::size_t i) {
-        using T = std::decay_t<decltype(x.light.falloff)>;
-        const LinearT<T> g = linear_t(x.light, x.sp);
-        if (!g.visible) return T(0);
-        return monte_carlo_1d<T>(0x5eed + i, n, strat, g.ta, g.tb,
-                                 [&](T t) { return linear_diffuse_integrand(g, x.sp, x.light.falloff, t); });
-      };
-      method(sd, o, std::string(strat ? "stratified-" : "mc-") + std::to_string(n), std::string(strat ? "stratified " : "Monte Carlo ") + std::to_string(n), "n=2",
-             "statistical, ~1/sqrt(N)" + std::string(strat ? " or better" : ""), d2, &stiff_d, mc, kAlways);
-    }
+  monte_carlo_rows(sd, o, "n=2", "statistical, ~1/sqrt(N)", "statistical, ~1/sqrt(N) or better", {16, 64, 256, 1024, 4096},
+                   d2, &stiff_d, [](int n, bool strat) {
+                     return [n, strat](const auto& x, std::size_t i) {
+                       using T = std::decay_t<decltype(x.light.falloff)>;
+                       const LinearT<T> g = linear_t(x.light, x.sp);
+                       if (!g.visible) return T(0);
+                       return monte_carlo_1d<T>(0x5eed + i, n, strat, g.ta, g.tb,
+                                                [&](T t) { return linear_diffuse_integrand(g, x.sp, x.light.falloff, t); });
+                     };
+                   });
 
   // Specular.
   progress("linear specular references");
@@ -272,25 +271,8 @@ LinearSections linear_report(const Options& o) {
   auto spec_with = [](SpecularOptions opt) {
     return [opt](const auto& x, std::size_t) { return shade_linear(x.light, x.sp, opt).specular; };
   };
-  SpecularOptions peak;
-  peak.method = SpecularMethod::kPeak;
-  method(ss, o, "peak", "peak (default)", "m 1..1e3", "the lobe's maximum (not the integral)", sp, &stiff_s, spec_with(peak), kAlways);
-  for (int k : {1, 2, 4, 8, 16}) {
-    SpecularOptions nb;
-    nb.method = SpecularMethod::kNeighborhood;
-    nb.neighborhood_samples = k;
-    method(ss, o, "neighbourhood-" + std::to_string(k), "neighbourhood K=" + std::to_string(k), "m 1..1e3", "mean lobe near the peak (not the integral)", sp,
-           &stiff_s, spec_with(nb), kAlways);
-  }
-  for (double tol : {1e-3, 1e-6, 1e-9, 1e-12}) {
-    SpecularOptions ex;
-    ex.method = SpecularMethod::kExact;
-    ex.exact_tolerance = tol;
-    char name[64], promise[96];
-    std::snprintf(name, sizeof name, "exact tol %g%s", tol, tol == 1e-9 ? " (opt. default)" : "");
-    std::snprintf(promise, sizeof promise, "relative %g (8/16-point panel difference)", tol);
-    method(ss, o, "exact-" + tol_key(tol), name, "m 1..1e3", promise, sp, &stiff_s, spec_with(ex), kAlways);
-  }
+  specular_method_rows(ss, o, sp, &stiff_s, "mean lobe near the peak (not the integral)", {1e-3, 1e-6, 1e-9, 1e-12},
+                       "8/16-point panel difference", spec_with);
   for (int order : {16, 64}) {
     const FixedRule rule = make_fixed_rule(order);
     auto gl = [&rule](const auto& x, std::size_t) {
@@ -301,19 +283,18 @@ LinearSections linear_report(const Options& o) {
     };
     method(ss, o, "fixed-gl-" + std::to_string(order), "fixed GL " + std::to_string(order) + " points", "m 1..1e3", "none", sp, &stiff_s, gl, kAlways);
   }
-  for (bool strat : {false, true})
-    for (int n : {16, 256, 4096}) {
-      auto mc = [n, strat](const auto& x, std::size_t i) {
-        using T = std::decay_t<decltype(x.light.falloff)>;
-        const LinearT<T> g = linear_t(x.light, x.sp);
-        if (!g.visible) return T(0);
-        return monte_carlo_1d<T>(0x5eed + i, n, strat, g.ta, g.tb, [&](T t) { return linear_specular_integrand(g, x.sp, t); });
-      };
-      method(ss, o, std::string(strat ? "stratified-" : "mc-") + std::to_string(n), std::string(strat ? "stratified " : "Monte Carlo ") + std::to_string(n), "m 1..1e3", "statistical", sp,
-             &stiff_s, mc, kAlways);
-    }
+  monte_carlo_rows(ss, o, "m 1..1e3", "statistical", "statistical", {16, 256, 4096}, sp, &stiff_s, [](int n, bool strat) {
+    return [n, strat](const auto& x, std::size_t i) {
+      using T = std::decay_t<decltype(x.light.falloff)>;
+      const LinearT<T> g = linear_t(x.light, x.sp);
+      if (!g.visible) return T(0);
+      return monte_carlo_1d<T>(0x5eed + i, n, strat, g.ta, g.tb, [&](T t) { return linear_specular_integrand(g, x.sp, t); });
+    };
+  });
   // What the peak estimates: the lobe's maximum (reference: dense search + golden section, t).
   {
+    SpecularOptions peak;
+    peak.method = SpecularMethod::kPeak;
     Section tmp;
     method(tmp, o, "peak-vs-lobe-maximum", "peak vs lobe maximum", "m 1..1e3", "", sp_max, static_cast<const CaseSet<LinX>*>(nullptr), spec_with(peak), kAlways);
     std::vector<double> ratio;

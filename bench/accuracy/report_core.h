@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -238,5 +239,18 @@ void method(Section& sec, const Options& o, const std::string& key, const std::s
 }
 
 inline const auto kAlways = [](const auto&) { return true; };
+
+// The Monte Carlo rows of a section: plain sampling at each of `samples`, then stratified;
+// estimator(n, stratified) gives the method, (case, case index) -> value.
+template <template <class> class X, class Estimator>
+void monte_carlo_rows(Section& sec, const Options& o, const std::string& set, const std::string& plain_promise,
+                      const std::string& stratified_promise, std::initializer_list<int> samples,
+                      const CaseSet<X>& ordinary, const CaseSet<X>* stiff, const Estimator& estimator) {
+  for (bool strat : {false, true})
+    for (int n : samples)
+      method(sec, o, std::string(strat ? "stratified-" : "mc-") + std::to_string(n),
+             std::string(strat ? "stratified " : "Monte Carlo ") + std::to_string(n), set,
+             strat ? stratified_promise : plain_promise, ordinary, stiff, estimator(n, strat), kAlways);
+}
 
 }  // namespace vlit::bench::accuracy

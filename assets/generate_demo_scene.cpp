@@ -76,42 +76,32 @@ void add_object(vlit::GltfSceneWriter& scene, const std::string& name, const Mes
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s OUT.glb\n", argv[0]);
-    return 2;
-  }
-  vlit::GltfSceneWriter scene("vlit generate_demo_scene");
-  add_object(scene, "floor", grid_mesh({-3, 0, 2}, {6, 0, 0}, {0, 0, -5}, 96, 80), {0.8, 0.8, 0.78}, 0.9);
-  add_object(scene, "back wall", grid_mesh({-3, 0, -3}, {6, 0, 0}, {0, 3, 0}, 96, 48), {0.7, 0.72, 0.8}, 0.9);
-  add_object(scene, "sphere", lathe({-1.2, 0.6, 0}, 48, 96,
-                                    [](double t) { const double a = M_PI * t - M_PI / 2;  // bottom to top
-                                                   return std::pair{0.6 * std::cos(a), 0.6 * std::sin(a)}; }),
-             {0.85, 0.25, 0.2}, 0.35);
-  add_object(scene, "box", box({0.3, 0, -1.2}, {1.3, 1, -0.2}, 16), {0.25, 0.45, 0.85}, 0.6);
-  add_object(scene, "vase", lathe({1.6, 0, 0.9}, 64, 64,
-                                  [](double t) { return std::pair{0.18 + 0.12 * std::sin(M_PI * t * 1.5), 1.1 * t}; }),
-             {0.9, 0.75, 0.3}, 0.25);
+  return vlit::write_generated_scene(argc, argv, "generate_demo_scene", [](vlit::GltfSceneWriter& scene) {
+    add_object(scene, "floor", grid_mesh({-3, 0, 2}, {6, 0, 0}, {0, 0, -5}, 96, 80), {0.8, 0.8, 0.78}, 0.9);
+    add_object(scene, "back wall", grid_mesh({-3, 0, -3}, {6, 0, 0}, {0, 3, 0}, 96, 48), {0.7, 0.72, 0.8}, 0.9);
+    add_object(scene, "sphere", lathe({-1.2, 0.6, 0}, 48, 96,
+                                      [](double t) { const double a = M_PI * t - M_PI / 2;  // bottom to top
+                                                     return std::pair{0.6 * std::cos(a), 0.6 * std::sin(a)}; }),
+               {0.85, 0.25, 0.2}, 0.35);
+    add_object(scene, "box", box({0.3, 0, -1.2}, {1.3, 1, -0.2}, 16), {0.25, 0.45, 0.85}, 0.6);
+    add_object(scene, "vase", lathe({1.6, 0, 0.9}, 64, 64,
+                                    [](double t) { return std::pair{0.18 + 0.12 * std::sin(M_PI * t * 1.5), 1.1 * t}; }),
+               {0.9, 0.75, 0.3}, 0.25);
 
-  // Camera: from the front-right, looking at the middle of the set (a rotation about X then Y).
-  tinygltf::Camera camera;
-  camera.type = "perspective";
-  camera.perspective.yfov = 0.75;
-  camera.perspective.znear = 0.05;
-  camera.perspective.zfar = 100;  // tinygltf writes zfar even when unset, and 0 is invalid
-  scene.model().cameras.push_back(camera);
-  tinygltf::Node cam;
-  cam.name = "camera";
-  cam.camera = 0;
-  cam.translation = {1.6, 2.2, 5.6};
-  const double yaw = 0.27, pitch = -0.3;  // radians
-  const double cy = std::cos(yaw / 2), sy = std::sin(yaw / 2), cp = std::cos(pitch / 2), sp = std::sin(pitch / 2);
-  cam.rotation = {cy * sp, sy * cp, -sy * sp, cy * cp};  // q_yaw * q_pitch
-  scene.add_root_node(cam);
-
-  try {
-    return scene.write(argv[1]) ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return 1;
-  }
+    // Camera: from the front-right, looking at the middle of the set (a rotation about X then Y).
+    tinygltf::Camera camera;
+    camera.type = "perspective";
+    camera.perspective.yfov = 0.75;
+    camera.perspective.znear = 0.05;
+    camera.perspective.zfar = 100;  // tinygltf writes zfar even when unset, and 0 is invalid
+    scene.model().cameras.push_back(camera);
+    tinygltf::Node cam;
+    cam.name = "camera";
+    cam.camera = 0;
+    cam.translation = {1.6, 2.2, 5.6};
+    const double yaw = 0.27, pitch = -0.3;  // radians
+    const double cy = std::cos(yaw / 2), sy = std::sin(yaw / 2), cp = std::cos(pitch / 2), sp = std::sin(pitch / 2);
+    cam.rotation = {cy * sp, sy * cp, -sy * sp, cy * cp};  // q_yaw * q_pitch
+    scene.add_root_node(cam);
+  });
 }

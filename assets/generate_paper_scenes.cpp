@@ -260,14 +260,15 @@ constexpr std::array<double, 3> kCoolWhite{0.9, 0.95, 1.0};
 
 bool write_bowling(const std::string& dir) {
   GltfSceneWriter w("vlit generate_paper_scenes (Picott 1992 fig. 3, 4, 7)");
-  const int maple = w.material({"lane maple", {0.72, 0.5, 0.28}, 0.3, 0});
-  const int gutter_grey = w.material({"gutter", {0.12, 0.12, 0.13}, 0.45, 0});
-  const int capping = w.material({"capping", {0.12, 0.1, 0.09}, 0.6, 0});
-  const int dark = w.material({"pit and masking", {0.1, 0.1, 0.12}, 0.9, 0});
-  const int kickback = w.material({"kickback", {0.35, 0.18, 0.12}, 0.7, 0});
-  const int pin_white = w.material({"pin white", {0.92, 0.91, 0.88}, 0.25, 0});
-  const int pin_red = w.material({"pin stripe", {0.75, 0.06, 0.05}, 0.25, 0});
-  const int ball_blue = w.material({"ball", {0.08, 0.16, 0.55}, 0.12, 0});
+  const auto [maple, gutter_grey, capping, dark, kickback, pin_white, pin_red, ball_blue] =
+      w.materials({{"lane maple", {0.72, 0.5, 0.28}, 0.3, 0},
+                   {"gutter", {0.12, 0.12, 0.13}, 0.45, 0},
+                   {"capping", {0.12, 0.1, 0.09}, 0.6, 0},
+                   {"pit and masking", {0.1, 0.1, 0.12}, 0.9, 0},
+                   {"kickback", {0.35, 0.18, 0.12}, 0.7, 0},
+                   {"pin white", {0.92, 0.91, 0.88}, 0.25, 0},
+                   {"pin stripe", {0.75, 0.06, 0.05}, 0.25, 0},
+                   {"ball", {0.08, 0.16, 0.55}, 0.12, 0}});
 
   const double half = kLaneWidth / 2, r_gutter = kGutterWidth / 2;
   const double lane_length = kLaneNear - kPinDeckBack;
@@ -367,14 +368,15 @@ constexpr double kRoomHalfWidth = 3.0, kRoomBack = -3.0, kRoomFront = 2.0, kRoom
 
 bool write_studio(const std::string& dir) {
   GltfSceneWriter w("vlit generate_paper_scenes (Picott 1992 fig. 9)");
-  const int floor_m = w.material({"floor", {0.55, 0.5, 0.45}, 0.5, 0});
-  const int wall_m = w.material({"walls", {0.6, 0.6, 0.58}, 0.9, 0});
-  const int wood = w.material({"table", {0.45, 0.26, 0.13}, 0.4, 0});
-  const int vase_m = w.material({"vase", {0.1, 0.45, 0.5}, 0.15, 0});
-  const int sphere_m = w.material({"sphere", {0.8, 0.2, 0.15}, 0.25, 0});
-  const int torus_m = w.material({"torus", {0.85, 0.65, 0.2}, 0.3, 1});
-  const int box_m = w.material({"boxes", {0.3, 0.45, 0.75}, 0.6, 0});
-  const int box2_m = w.material({"small box", {0.85, 0.82, 0.7}, 0.6, 0});
+  const auto [floor_m, wall_m, wood, vase_m, sphere_m, torus_m, box_m, box2_m] =
+      w.materials({{"floor", {0.55, 0.5, 0.45}, 0.5, 0},
+                   {"walls", {0.6, 0.6, 0.58}, 0.9, 0},
+                   {"table", {0.45, 0.26, 0.13}, 0.4, 0},
+                   {"vase", {0.1, 0.45, 0.5}, 0.15, 0},
+                   {"sphere", {0.8, 0.2, 0.15}, 0.25, 0},
+                   {"torus", {0.85, 0.65, 0.2}, 0.3, 1},
+                   {"boxes", {0.3, 0.45, 0.75}, 0.6, 0},
+                   {"small box", {0.85, 0.82, 0.7}, 0.6, 0}});
 
   const double width = 2 * kRoomHalfWidth, depth = kRoomFront - kRoomBack;
   w.node("floor", w.mesh("floor", {{grid({-kRoomHalfWidth, 0, kRoomFront}, {width, 0, 0}, {0, 0, -depth}, 96, 80), floor_m}}));

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <exception>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -67,6 +69,14 @@ class GltfSceneWriter {
     model_.buffers.resize(1);
     model_.scenes.resize(1);
     model_.defaultScene = 0;
+  }
+
+  // Several materials, added in order; their indices in the same order.
+  template <std::size_t N>
+  std::array<int, N> materials(const MaterialSpec (&specs)[N]) {
+    std::array<int, N> out;
+    for (std::size_t i = 0; i < N; ++i) out[i] = material(specs[i]);
+    return out;
   }
 
   int material(const MaterialSpec& spec) {
@@ -207,5 +217,24 @@ class GltfSceneWriter {
 
   tinygltf::Model model_;
 };
+
+// The main of a generator that writes one scene: `PROGRAM OUT.glb`; `build` fills the writer
+// (whose asset.generator is "vlit " + name). Exit status 2 for a wrong command line, 1 when the
+// file cannot be written (the message names it).
+inline int write_generated_scene(int argc, char** argv, const std::string& name,
+                                 const std::function<void(GltfSceneWriter&)>& build) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s OUT.glb\n", argv[0]);
+    return 2;
+  }
+  GltfSceneWriter scene("vlit " + name);
+  build(scene);
+  try {
+    return scene.write(argv[1]) ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 1;
+  }
+}
 
 }  // namespace vlit

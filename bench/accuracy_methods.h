@@ -1,4 +1,4 @@
-// Baseline methods the accuracy report (accuracy_report.cpp) compares the kernels with: a
+// Baseline methods the accuracy report (bench/accuracy/*_report.cpp) compares the kernels with: a
 // fixed-order Gauss-Legendre rule and plain / stratified Monte Carlo for the linear light, and
 // plain / stratified Monte Carlo over the polygon's area for the area light. They are what a user
 // would write without the paper's closed forms, so they are measured, not shipped.

@@ -5,6 +5,10 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
 #include <vector>
 
 namespace vlit::fit {
@@ -39,6 +43,24 @@ std::vector<LD> chebyshev_interpolant(F f, LD a, LD b, int deg) {
     cur = next;
   }
   return mono;
+}
+
+// The command line of the fit programs: `NAME [DEGREE] [--double]`, the degree in [1, max_degree]
+// (default_degree when absent), --double for the double kernels' range. Prints the usage and
+// returns nothing for anything else.
+struct FitArguments {
+  int degree;
+  bool double_range;
+};
+inline std::optional<FitArguments> fit_arguments(int argc, char** argv, const char* name, int default_degree,
+                                                 int max_degree) {
+  const int degree = argc > 1 ? std::atoi(argv[1]) : default_degree;
+  const bool double_range = argc > 2 && std::strcmp(argv[2], "--double") == 0;
+  if (degree < 1 || degree > max_degree || (argc > 2 && !double_range) || argc > 3) {
+    std::fprintf(stderr, "usage: %s [DEGREE 1..%d] [--double]\n", name, max_degree);
+    return std::nullopt;
+  }
+  return FitArguments{degree, double_range};
 }
 
 }  // namespace vlit::fit

@@ -39,12 +39,10 @@ R horner(const std::vector<LD>& mono, R z) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const int deg = argc > 1 ? std::atoi(argv[1]) : 8;
-  const bool dbl = argc > 2 && std::strcmp(argv[2], "--double") == 0;
-  if (deg < 1 || deg > 20 || (argc > 2 && !dbl) || argc > 3) {
-    std::fprintf(stderr, "usage: fit_atan_polynomial [DEGREE 1..20] [--double]\n");
-    return 2;
-  }
+  const auto args = vlit::fit::fit_arguments(argc, argv, "fit_atan_polynomial", 8, 20);
+  if (!args) return 2;
+  const int deg = args->degree;
+  const bool dbl = args->double_range;
   const LD xmax = dbl ? std::tan(M_PIl / 8) : LD(1);
   const std::vector<LD> mono = chebyshev_fit(deg, xmax * xmax);
   for (int i = 0; i <= deg; ++i) std::printf("z^%d: %.21Le\n", i, mono[i]);

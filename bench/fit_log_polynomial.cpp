@@ -21,12 +21,10 @@
 using vlit::fit::LD;
 
 int main(int argc, char** argv) {
-  const int deg = argc > 1 ? std::atoi(argv[1]) : 3;
-  const bool dbl = argc > 2 && std::strcmp(argv[2], "--double") == 0;
-  if (deg < 1 || deg > 12 || (argc > 2 && !dbl) || argc > 3) {
-    std::fprintf(stderr, "usage: fit_log_polynomial [DEGREE 1..12] [--double]\n");
-    return 2;
-  }
+  const auto args = vlit::fit::fit_arguments(argc, argv, "fit_log_polynomial", 3, 12);
+  if (!args) return 2;
+  const int deg = args->degree;
+  const bool dbl = args->double_range;
   const int n = deg + 1;
   const LD z_max = (3 - 2 * std::sqrt(LD(2))) * (3 - 2 * std::sqrt(LD(2)));
   auto f = [](LD z) { return z == 0 ? LD(2) : 2 * std::atanh(std::sqrt(z)) / std::sqrt(z); };

@@ -24,19 +24,12 @@
 
 #include "core/robust_math.h"
 #include "gltf/gltf_scene.h"
+#include "mesh/openmesh_mesh.h"
 #include "mesh/vertex_normals.h"
 
 namespace {
 
 using namespace vlit;
-
-struct Traits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-  VertexAttributes(OpenMesh::Attributes::Normal);
-  FaceAttributes(OpenMesh::Attributes::Normal);
-};
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<Traits>;
 
 double seconds_of(const std::function<void()>& f, int repeats) {
   const auto t = std::chrono::steady_clock::now();

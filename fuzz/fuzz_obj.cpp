@@ -14,8 +14,8 @@
 #include <unistd.h>
 
 #include "core/input_error.h"
-#include "gltf/emissive_lights.h"
 #include "mesh/obj_file.h"
+#include "scene/emissive_lights.h"
 
 namespace {
 

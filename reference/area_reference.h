@@ -78,6 +78,16 @@ inline LD reference_integral(const RefQuery& q) {
     if (hp == 0) continue;
     if (hp < 0 && !q.two_sided) continue;
     const LD height = std::abs(hp);
+    // The integrand at a = X - P: cos θ (diffuse) or the lobe max(0, Rv.â)^m, times cos θ_l / r².
+    auto integrand_at = [&](const V3& a) -> LD {
+      const LD r2 = length_squared(a);
+      const LD r = std::sqrt(r2);
+      const LD cos_l = height / r;
+      if (!q.specular) return (dot(N, a) / r) * cos_l / r2;
+      const LD c = dot(Rv, a) / r;
+      const LD lobe = c > 0 ? std::pow(c, m) : 0;
+      return lobe * cos_l / r2;
+    };
     V3 e1 = piece[1] - o;
     e1 = e1 / length(e1);
     const V3 e2 = cross(nl, e1);  // (e1, e2) keeps the piece CCW
@@ -149,15 +159,7 @@ inline LD reference_integral(const RefQuery& q) {
       const bool far_from_thin = height > LD(1e-2) * std::sqrt(diam2);
       if (std::abs(area2) / 2 < LD(1e-3) * diam2 && (!(center.x == foot.x && center.y == foot.y) || far_from_thin)) {
         const V3 v0_from_p = (o - P) + e1 * poly[0].x + e2 * poly[0].y;
-        auto f = [&](LD dx, LD dy) -> LD {
-          const V3 a = v0_from_p + e1 * dx + e2 * dy;
-          const LD r2 = length_squared(a);
-          const LD r = std::sqrt(r2);
-          const LD cos_l = height / r;
-          if (!q.specular) return (dot(N, a) / r) * cos_l / r2;
-          const LD c = dot(Rv, a) / r;
-          return (c > 0 ? std::pow(c, m) : 0) * cos_l / r2;
-        };
+        auto f = [&](LD dx, LD dy) { return integrand_at(v0_from_p + e1 * dx + e2 * dy); };
         for (size_t i = 1; i + 1 < poly.size(); ++i) {
           const LD e1x = poly[i].x - poly[0].x, e1y = poly[i].y - poly[0].y;
           const LD e2x = poly[i + 1].x - poly[0].x, e2y = poly[i + 1].y - poly[0].y;
@@ -175,16 +177,7 @@ inline LD reference_integral(const RefQuery& q) {
     const bool has_hit = !splits.empty();
     // a = X - P relative to the center, so the small vectors near the peak do not cancel.
     const V3 center_from_p = (o - P) + e1 * center.x + e2 * center.y;
-    auto integrand_polar = [&](LD dx, LD dy) -> LD {
-      const V3 a = center_from_p + e1 * dx + e2 * dy;
-      const LD r2 = length_squared(a);
-      const LD r = std::sqrt(r2);
-      const LD cos_l = height / r;
-      if (!q.specular) return (dot(N, a) / r) * cos_l / r2;
-      const LD c = dot(Rv, a) / r;
-      const LD lobe = c > 0 ? std::pow(c, m) : 0;
-      return lobe * cos_l / r2;
-    };
+    auto integrand_polar = [&](LD dx, LD dy) { return integrand_at(center_from_p + e1 * dx + e2 * dy); };
     const LD hit_phi = has_hit ? std::atan2(splits[0].y - center.y, splits[0].x - center.x) : 0;
     const LD hit_rho = has_hit ? std::hypot(splits[0].x - center.x, splits[0].y - center.y) : 0;
     const LD hit_width = has_hit ? length(o + e1 * splits[0].x + e2 * splits[0].y - P) / std::sqrt(m + 1) / 8 : 0;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -184,12 +185,20 @@ inline LD ref_phong(LD c, LD m) {
   return std::pow(c, m);
 }
 
+// The specular of a segment of zero length (a point: its lobe value, divided by |L|^nf, when above
+// the horizon) or of one wholly below the horizon (0); nothing for any other segment.
+inline std::optional<LD> ref_specular_degenerate(const RefGeom& g, LD m, LD nf = 0) {
+  if (g.ell == 0)
+    return dot(g.l0, g.n) > 0 ? ref_phong(ref_cos_rv(g, 0), m) / std::pow(std::sqrt(dot(g.l0, g.l0)), nf) : LD(0);
+  if (!g.visible) return LD(0);
+  return std::nullopt;
+}
+
 template <class T>
 LD ref_specular_peak(const Typed<T>& x) {
   const RefGeom g = ref_geom(x);
   const LD m = LD(x.sp.shininess);
-  if (g.ell == 0) return dot(g.l0, g.n) > 0 ? ref_phong(ref_cos_rv(g, 0), m) : 0;
-  if (!g.visible) return 0;
+  if (const std::optional<LD> d = ref_specular_degenerate(g, m)) return *d;
   return ref_phong(ref_cos_rv(g, ref_peak_t(g)), m);
 }
 
@@ -201,9 +210,7 @@ LD ref_specular_exact(const Typed<T>& x, bool with_falloff = true) {
   const RefGeom g = ref_geom(x);
   const LD m = LD(x.sp.shininess);
   const LD nf = with_falloff ? LD(x.light.falloff) : LD(0);
-  if (g.ell == 0)
-    return dot(g.l0, g.n) > 0 ? ref_phong(ref_cos_rv(g, 0), m) / std::pow(std::sqrt(dot(g.l0, g.l0)), nf) : 0;
-  if (!g.visible) return 0;
+  if (const std::optional<LD> d = ref_specular_degenerate(g, m, nf)) return *d;
   const LD tp = ref_peak_t(g);
   const LD rvd = dot(g.rv, g.ld);
   const LD t_zero = rvd != 0 ? -dot(g.rv, g.l0) / rvd : -1;

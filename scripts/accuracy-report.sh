@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Accuracy report: error against run time for every light-model method, stability on stiff cases,
-# and an end-to-end bake of a real asset (bench/accuracy_report.cpp).
+# and an end-to-end bake of a real asset (bench/accuracy_report.cpp, one file per light model in
+# bench/accuracy/). The program measures and writes the tables; the text of docs/accuracy.md is
+# docs/accuracy.md.in, whose {{names}} the program fills with this run's tables and numbers.
 #
 #   scripts/accuracy-report.sh           full report: writes docs/accuracy.md and docs/images/accuracy/*.png
 #   scripts/accuracy-report.sh --quick   seconds-long smoke version (what CI runs through ctest
@@ -52,7 +54,8 @@ fi
 out="$build/accuracy-report${quick[0]:+-quick}"
 rm -rf "$out"
 status=0
-OMP_NUM_THREADS=1 "$build/bench/accuracy_report" "${quick[@]}" --out-dir "$out" --asset "$asset" "${blender_args[@]}" || status=$?
+OMP_NUM_THREADS=1 "$build/bench/accuracy_report" "${quick[@]}" --out-dir "$out" --asset "$asset" \
+  --template docs/accuracy.md.in "${blender_args[@]}" || status=$?
 if [[ $status -ne 0 && $status -ne 1 ]]; then
   echo "accuracy-report: the program failed (status $status)" >&2
   exit "$status"

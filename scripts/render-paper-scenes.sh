@@ -7,11 +7,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build/release}"
-if [ ! -f "$build_dir/CMakeCache.txt" ]; then
-  if [ "$build_dir" = build/release ]; then cmake --preset release >/dev/null
-  else cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null; fi
-fi
-cmake --build "$build_dir" -j"${JOBS:-2}" --target vlit
+# shellcheck source=scripts/build-targets.sh
+source scripts/build-targets.sh
+build_targets "$build_dir" vlit
 mkdir -p docs/images/paper
 status=0
 for scene in bowling studio; do

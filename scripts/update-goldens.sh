@@ -8,10 +8,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir="${BUILD_DIR:-build/release}"
-if [ ! -f "$build_dir/CMakeCache.txt" ]; then
-  if [ "$build_dir" = build/release ]; then cmake --preset release >/dev/null
-  else cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null; fi
-fi
-cmake --build "$build_dir" -j"${JOBS:-2}" --target vlit golden_tests
+# shellcheck source=scripts/build-targets.sh
+source scripts/build-targets.sh
+build_targets "$build_dir" vlit golden_tests
 VLIT_UPDATE_GOLDENS=1 "$build_dir/tests/golden_tests" --test-case='golden: *'
 git status --short tests/golden/images

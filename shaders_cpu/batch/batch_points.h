@@ -40,4 +40,22 @@ struct BatchOutput {
   std::uint8_t* in_double = nullptr;
 };
 
+// Calls lane(px, py, pz, nx, ny, nz, diffuse, stiff) for every lane v in [begin, end), with the
+// lane's inputs by value and its two outputs by reference, as one `omp simd` loop over
+// restrict-qualified copies of the arrays: GCC 12 does not vectorise through the structs'
+// pointers, and the copies tell it the outputs alias no input. `lane` must be inlinable.
+template <class Lane>
+inline void for_each_lane(const BatchPoints& pts, long begin, long end, const BatchOutput& out, const Lane& lane) {
+  const double* __restrict px = pts.px;
+  const double* __restrict py = pts.py;
+  const double* __restrict pz = pts.pz;
+  const float* __restrict nx = pts.nx;
+  const float* __restrict ny = pts.ny;
+  const float* __restrict nz = pts.nz;
+  float* __restrict diffuse = out.diffuse;
+  std::uint8_t* __restrict stiff = out.stiff;
+#pragma omp simd
+  for (long v = begin; v < end; ++v) lane(px[v], py[v], pz[v], nx[v], ny[v], nz[v], diffuse[v], stiff[v]);
+}
+
 }  // namespace vlit

@@ -154,24 +154,16 @@ inline double disk_arc_lane(const DiskBatchLight& L, double Dx, double Dy, doubl
 }
 
 inline void disk_diffuse_lanes(const DiskBatchLight& L, const BatchPoints& pts, long begin, long end, const BatchOutput& out) {
-  const double* __restrict pxs = pts.px;
-  const double* __restrict pys = pts.py;
-  const double* __restrict pzs = pts.pz;
-  const float* __restrict nxs = pts.nx;
-  const float* __restrict nys = pts.ny;
-  const float* __restrict nzs = pts.nz;
-  float* __restrict diffuse = out.diffuse;
-  std::uint8_t* __restrict stiff_out = out.stiff;
   const double cx = L.center[0], cy = L.center[1], cz = L.center[2];
   const double lnx = L.normal[0], lny = L.normal[1], lnz = L.normal[2];
   const double ux = L.u[0], uy = L.u[1], uz = L.u[2], vx = L.v[0], vy = L.v[1], vz = L.v[2];
   const double big_r = L.radius, r2 = big_r * big_r;
   const double back = L.two_sided ? -1. : 0.;
   constexpr double kPi = 3.14159265358979323846;
-#pragma omp simd
-  for (long k = begin; k < end; ++k) {
-    const double Dx = cx - pxs[k], Dy = cy - pys[k], Dz = cz - pzs[k];
-    const double nx = nxs[k], ny = nys[k], nz = nzs[k];
+  for_each_lane(pts, begin, end, out, [=](double px, double py, double pz, float nxf, float nyf, float nzf, float& diffuse,
+                                          std::uint8_t& stiff_out) {
+    const double Dx = cx - px, Dy = cy - py, Dz = cz - pz;
+    const double nx = nxf, ny = nyf, nz = nzf;
     const double side = -(lnx * Dx + lny * Dy + lnz * Dz);  // n_l.(P - c)
     const double orient = side > 0. ? 1. : (side < 0. ? back : 0.);
     const double h = side < 0. ? -side : side, h2 = h * h;
@@ -195,10 +187,10 @@ inline void disk_diffuse_lanes(const DiskBatchLight& L, const BatchPoints& pts, 
     double value = full > 0. ? full : 0.;
     value = above > 0. ? value : 0.;
     value = orient != 0. ? value : 0.;
-    diffuse[k] = float(value);
+    diffuse = float(value);
     const double cut = (orient != 0. ? 1. : 0.) * (1. - above) * (1. - below);
-    stiff_out[k] = cut > 0. ? 1 : 0;
-  }
+    stiff_out = cut > 0. ? 1 : 0;
+  });
 }
 
 }  // namespace batch_detail

@@ -197,16 +197,10 @@ template <int kFalloff>
 inline void linear_diffuse_loop(const LinearBatchLight& light, const BatchPoints& pts, long begin, long end,
                                 const BatchOutput& out) {
   const LinearBatchLight L = light;  // a local copy: provably not aliased by the output arrays
-  const double* __restrict px = pts.px;
-  const double* __restrict py = pts.py;
-  const double* __restrict pz = pts.pz;
-  const float* __restrict nx = pts.nx;
-  const float* __restrict ny = pts.ny;
-  const float* __restrict nz = pts.nz;
-  float* __restrict diffuse = out.diffuse;
-  std::uint8_t* __restrict stiff = out.stiff;
-#pragma omp simd
-  for (long v = begin; v < end; ++v) linear_diffuse_lane<kFalloff>(L, px[v], py[v], pz[v], nx[v], ny[v], nz[v], diffuse[v], stiff[v]);
+  for_each_lane(pts, begin, end, out,
+                [&L](double px, double py, double pz, float nx, float ny, float nz, float& diffuse, std::uint8_t& stiff) {
+                  linear_diffuse_lane<kFalloff>(L, px, py, pz, nx, ny, nz, diffuse, stiff);
+                });
 }
 
 }  // namespace batch_detail

@@ -65,16 +65,10 @@ inline void punctual_lane(const PunctualBatchLight& L, double px, double py, dou
 template <int kFalloff, bool kSpot>
 inline void punctual_loop(const PunctualBatchLight& light, const BatchPoints& pts, long begin, long end, const BatchOutput& out) {
   const PunctualBatchLight L = light;  // a local copy: provably not aliased by the output arrays
-  const double* __restrict px = pts.px;
-  const double* __restrict py = pts.py;
-  const double* __restrict pz = pts.pz;
-  const float* __restrict nx = pts.nx;
-  const float* __restrict ny = pts.ny;
-  const float* __restrict nz = pts.nz;
-  float* __restrict diffuse = out.diffuse;
-  std::uint8_t* __restrict stiff = out.stiff;
-#pragma omp simd
-  for (long v = begin; v < end; ++v) punctual_lane<kFalloff, kSpot>(L, px[v], py[v], pz[v], nx[v], ny[v], nz[v], diffuse[v], stiff[v]);
+  for_each_lane(pts, begin, end, out,
+                [&L](double px, double py, double pz, float nx, float ny, float nz, float& diffuse, std::uint8_t& stiff) {
+                  punctual_lane<kFalloff, kSpot>(L, px, py, pz, nx, ny, nz, diffuse, stiff);
+                });
 }
 
 template <bool kSpot>
@@ -94,17 +88,12 @@ inline void punctual_diffuse_batch(const PunctualBatchLight& light, const BatchP
                                    const BatchOutput& out) {
   if (light.kind == PunctualBatchLight::Kind::kDirectional) {
     const double tx = -light.direction[0], ty = -light.direction[1], tz = -light.direction[2];
-    const float* __restrict nx = pts.nx;
-    const float* __restrict ny = pts.ny;
-    const float* __restrict nz = pts.nz;
-    float* __restrict diffuse = out.diffuse;
-    std::uint8_t* __restrict stiff = out.stiff;
-#pragma omp simd
-    for (long v = begin; v < end; ++v) {
-      const double c = double(nx[v]) * tx + double(ny[v]) * ty + double(nz[v]) * tz;
-      diffuse[v] = c > 0. ? float(c) : 0.f;
-      stiff[v] = 0;
-    }
+    for_each_lane(pts, begin, end, out,
+                  [tx, ty, tz](double, double, double, float nx, float ny, float nz, float& diffuse, std::uint8_t& stiff) {
+                    const double c = double(nx) * tx + double(ny) * ty + double(nz) * tz;
+                    diffuse = c > 0. ? float(c) : 0.f;
+                    stiff = 0;
+                  });
   } else if (light.kind == PunctualBatchLight::Kind::kSpot) {
     batch_detail::punctual_by_falloff<true>(light, pts, begin, end, out);
   } else {

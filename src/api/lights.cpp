@@ -95,63 +95,58 @@ Error::Error(std::string input, std::string problem, std::string where)
     : std::runtime_error(format_error(input, problem, where)),
       input_(std::move(input)), problem_(std::move(problem)), where_(std::move(where)) {}
 
-Light Light::point(const Vector3& position, double intensity, const Vector3& color) {
+namespace {
+
+// The part every factory shares: the kind, the emitted intensity and the colour.
+Light emitter(LightKind kind, double intensity, const Vector3& color) {
   Light l;
-  l.kind = LightKind::kPoint;
-  l.position = position;
+  l.kind = kind;
   l.intensity = intensity;
   l.color = color;
   return l;
 }
 
+}  // namespace
+
+Light Light::point(const Vector3& position, double intensity, const Vector3& color) {
+  Light l = emitter(LightKind::kPoint, intensity, color);
+  l.position = position;
+  return l;
+}
+
 Light Light::directional(const Vector3& direction, double intensity, const Vector3& color) {
-  Light l;
-  l.kind = LightKind::kDirectional;
+  Light l = emitter(LightKind::kDirectional, intensity, color);
   l.direction = direction;
-  l.intensity = intensity;
-  l.color = color;
   return l;
 }
 
 Light Light::spot(const Vector3& position, const Vector3& direction, double outer_cone_angle, double intensity,
                   const Vector3& color) {
-  Light l;
-  l.kind = LightKind::kSpot;
+  Light l = emitter(LightKind::kSpot, intensity, color);
   l.position = position;
   l.direction = direction;
   l.outer_cone_angle = outer_cone_angle;
-  l.intensity = intensity;
-  l.color = color;
   return l;
 }
 
 Light Light::tube(const Vector3& from, const Vector3& to, double intensity, const Vector3& color) {
-  Light l;
-  l.kind = LightKind::kLinear;
+  Light l = emitter(LightKind::kLinear, intensity, color);
   l.from = from;
   l.to = to;
-  l.intensity = intensity;
-  l.color = color;
   return l;
 }
 
 Light Light::panel(std::vector<Vector3> polygon, double intensity, const Vector3& color) {
-  Light l;
-  l.kind = LightKind::kArea;
+  Light l = emitter(LightKind::kArea, intensity, color);
   l.polygon = std::move(polygon);
-  l.intensity = intensity;
-  l.color = color;
   return l;
 }
 
 Light Light::disk(const Vector3& center, const Vector3& normal, double radius, double intensity, const Vector3& color) {
-  Light l;
-  l.kind = LightKind::kDisk;
+  Light l = emitter(LightKind::kDisk, intensity, color);
   l.center = center;
   l.normal = normal;
   l.radius = radius;
-  l.intensity = intensity;
-  l.color = color;
   return l;
 }
 

@@ -1,4 +1,5 @@
-// Affine transform of points (3x4, row-major), the composition of glTF node transforms.
+// Affine transform of points (3x4, row-major), the composition of glTF node transforms, built
+// from a translation, a rotation quaternion and a scale (from_trs) or given as a matrix.
 // Normals transform by the inverse transpose of the linear part; a negative determinant
 // (mirroring, e.g. a negative scale) flips triangle winding.
 #pragma once
@@ -37,6 +38,32 @@ struct Affine {
     Vec3d out = r0 * n.x + r1 * n.y + r2 * n.z;
     if (determinant() < 0) out = -out;
     return out;
+  }
+
+  // T x R x S: translation t, rotation by the quaternion q = (x, y, z, w) (normalised here; the
+  // zero quaternion is used as given), scale s along the local axes.
+  static Affine from_trs(const Vec3d& t, std::array<double, 4> q, const Vec3d& s) {
+    auto& [qx, qy, qz, qw] = q;
+    const double len = std::sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
+    if (len > 0) { qx /= len; qy /= len; qz /= len; qw /= len; }
+    const double rot[3][3] = {
+        {1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)},
+        {2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)},
+        {2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)}};
+    const double scale[3] = {s.x, s.y, s.z};
+    Affine a;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) a.m[r][c] = rot[r][c] * scale[c];
+      a.m[r][3] = t[r];
+    }
+    return a;
+  }
+
+  bool is_finite() const {
+    for (const auto& row : m)
+      for (double v : row)
+        if (!std::isfinite(v)) return false;
+    return true;
   }
 
   Affine operator*(const Affine& b) const {

@@ -9,7 +9,7 @@
 namespace vlit {
 namespace {
 
-std::string node_path(int node) { return "nodes[" + std::to_string(node) + "].extensions." + kExtLightsArea; }
+std::string node_path(int node) { return light_reference_path(node, kExtLightsArea); }
 
 // The polygon with the node's transform applied, counter-clockwise seen from the side it emits
 // to. Local polygons are given with their Newell normal along local -Z; a mirroring transform
@@ -31,17 +31,12 @@ double polygon_area(const std::vector<Vec3d>& polygon) {
 }  // namespace
 
 std::vector<AreaLightDefinition> read_area_light_definitions(const GltfFile& file, std::vector<std::string>& warnings) {
-  std::vector<AreaLightDefinition> out;
-  const auto ext = file.model.extensions.find(kExtLightsArea);
-  if (ext == file.model.extensions.end()) return out;
-  ExtensionObject root(ext->second, file.path, std::string("extensions.") + kExtLightsArea);
-  for (ExtensionObject& light : root.objects("lights")) {
-    AreaLightDefinition d;
-    d.name = light.string("name", "");
-    d.color = light.vec3("color", Vec3d{1, 1, 1});
-    if (d.color.x < 0 || d.color.y < 0 || d.color.z < 0) light.fail("color", "color components must be >= 0");
-    d.intensity = light.number("intensity", 1000.0);
-    if (d.intensity < 0) light.fail("intensity", "intensity (nits) must be >= 0");
+  // The draft may grow: unknown properties are warnings.
+  auto warn_unread = [&](const ExtensionObject& object) {
+    for (const std::string& k : object.unread_keys())
+      warnings.push_back(file.path + ": " + object.path() + "." + k + ": unknown property; ignored");
+  };
+  auto read_shape = [&](ExtensionObject& light, AreaLightDefinition& d) {
     const std::string type = light.string("type");
     if (type != "rect" && type != "disk") light.fail("type", "unknown area light type \"" + type + "\" (expected rect or disk)");
     d.rect = type == "rect";
@@ -51,31 +46,18 @@ std::vector<AreaLightDefinition> read_area_light_definitions(const GltfFile& fil
       ExtensionObject rect = light.object("rect");
       d.aspect = rect.number("aspect", 1.0);
       if (!(d.aspect > 0)) rect.fail("aspect", "aspect must be > 0");
-      for (const std::string& k : rect.unread_keys())
-        warnings.push_back(file.path + ": " + rect.path() + "." + k + ": unknown property; ignored");
+      warn_unread(rect);
     }
-    for (const std::string& k : light.unread_keys())
-      warnings.push_back(file.path + ": " + light.path() + "." + k + ": unknown property; ignored");
-    out.push_back(d);
-  }
-  for (const std::string& k : root.unread_keys())
-    warnings.push_back(file.path + ": " + root.path() + "." + k + ": unknown property; ignored");
-  return out;
+  };
+  return read_light_definitions<AreaLightDefinition>(file, kExtLightsArea, 1000.0, "nits", read_shape, warn_unread);
 }
 
 std::optional<LightSource> place_area_light(const GltfFile& file, const std::vector<AreaLightDefinition>& definitions,
                                             int node_index, const Affine& world, std::vector<std::string>& warnings) {
-  const tinygltf::Node& node = file.model.nodes[node_index];
-  ExtensionObject ref(node.extensions.at(kExtLightsArea), file.path, node_path(node_index));
-  const int index = ref.index("light");
-  if (static_cast<std::size_t>(index) >= definitions.size())
-    ref.fail("light", "light " + std::to_string(index) + " does not exist (the file defines " +
-                          std::to_string(definitions.size()) + " EXT_lights_area lights)");
-  const AreaLightDefinition& d = definitions[index];
-  LightSource l;
-  l.name = !d.name.empty() ? d.name : !node.name.empty() ? node.name : file.path + ": " + node_path(node_index);
-  l.color = d.color;
-  l.intensity = d.intensity;
+  ExtensionObject ref(file.model.nodes[node_index].extensions.at(kExtLightsArea), file.path, node_path(node_index));
+  const AreaLightDefinition& d = definitions[referenced_light(ref, definitions.size(), kExtLightsArea)];
+  LightSource l = placed_light(d.emission, file, node_index, kExtLightsArea);
+  l.intensity = d.emission.intensity;
   l.two_sided = false;
   if (d.rect) {
     const double hw = 0.5 * d.size * d.aspect, hh = 0.5 * d.size;

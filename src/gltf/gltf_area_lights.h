@@ -13,6 +13,7 @@
 
 #include "core/affine.h"
 #include "gltf/gltf_file.h"
+#include "gltf/light_extension.h"
 #include "scene/light_source.h"
 
 namespace vlit {
@@ -20,9 +21,7 @@ namespace vlit {
 inline constexpr const char* kExtLightsArea = "EXT_lights_area";
 
 struct AreaLightDefinition {
-  std::string name;
-  Vec3d color{1, 1, 1};
-  double intensity = 1000;  // nits (the draft's default)
+  LightEmission emission;   // intensity in nits (the draft's default: 1000)
   bool rect = true;         // else disk
   double size = 1;          // rect: height (local Y); disk: diameter
   double aspect = 1;        // rect: width / height

@@ -8,7 +8,7 @@
 namespace vlit {
 namespace {
 
-std::string node_path(int node) { return "nodes[" + std::to_string(node) + "].extensions." + kVlitLightsLinear; }
+std::string node_path(int node) { return light_reference_path(node, kVlitLightsLinear); }
 
 void reject_unknown(const ExtensionObject& object) {
   for (const std::string& k : object.unread_keys())
@@ -18,47 +18,29 @@ void reject_unknown(const ExtensionObject& object) {
 }  // namespace
 
 std::vector<LinearLightDefinition> read_linear_light_definitions(const GltfFile& file) {
-  std::vector<LinearLightDefinition> out;
-  const auto ext = file.model.extensions.find(kVlitLightsLinear);
-  if (ext == file.model.extensions.end()) return out;
-  ExtensionObject root(ext->second, file.path, std::string("extensions.") + kVlitLightsLinear);
-  for (ExtensionObject& light : root.objects("lights")) {
-    LinearLightDefinition d;
-    d.name = light.string("name", "");
-    d.color = light.vec3("color", Vec3d{1, 1, 1});
-    if (d.color.x < 0 || d.color.y < 0 || d.color.z < 0) light.fail("color", "color components must be >= 0");
-    d.intensity = light.number("intensity", 1.0);
-    if (d.intensity < 0) light.fail("intensity", "intensity (cd per metre) must be >= 0");
+  auto read_shape = [](ExtensionObject& light, LinearLightDefinition& d) {
     d.from = light.vec3("from");
     d.to = light.vec3("to");
     d.falloff = light.number("falloff", 2.0);
     if (d.falloff < 0 || d.falloff > 3) light.fail("falloff", "falloff must be in [0, 3]");
-    reject_unknown(light);
-    out.push_back(d);
-  }
-  reject_unknown(root);
-  return out;
+  };
+  // Our own extension: an unknown property is an error (a typo would silently change the light).
+  return read_light_definitions<LinearLightDefinition>(file, kVlitLightsLinear, 1.0, "cd per metre", read_shape,
+                                                       reject_unknown);
 }
 
 std::optional<LightSource> place_linear_light(const GltfFile& file, const std::vector<LinearLightDefinition>& definitions,
                                               int node_index, const Affine& world, std::vector<std::string>& warnings) {
-  const tinygltf::Node& node = file.model.nodes[node_index];
-  ExtensionObject ref(node.extensions.at(kVlitLightsLinear), file.path, node_path(node_index));
-  const int index = ref.index("light");
-  if (static_cast<std::size_t>(index) >= definitions.size())
-    ref.fail("light", "light " + std::to_string(index) + " does not exist (the file defines " +
-                          std::to_string(definitions.size()) + " VLIT_lights_linear lights)");
+  ExtensionObject ref(file.model.nodes[node_index].extensions.at(kVlitLightsLinear), file.path, node_path(node_index));
+  const LinearLightDefinition& d = definitions[referenced_light(ref, definitions.size(), kVlitLightsLinear)];
   reject_unknown(ref);
-  const LinearLightDefinition& d = definitions[index];
-  LightSource l;
+  LightSource l = placed_light(d.emission, file, node_index, kVlitLightsLinear);
   l.type = LightType::kLinear;
-  l.name = !d.name.empty() ? d.name : !node.name.empty() ? node.name : file.path + ": " + node_path(node_index);
-  l.color = d.color;
   l.falloff = d.falloff;
   l.from = world.apply_point(d.from);
   l.to = world.apply_point(d.to);
   const double world_length = length(l.to - l.from);
-  l.intensity = d.intensity * world_length;
+  l.intensity = d.emission.intensity * world_length;
   if (!(world_length > 0) || !std::isfinite(l.intensity)) {
     warnings.push_back(file.path + ": " + node_path(node_index) + ": the segment has zero length in world space; ignored");
     return std::nullopt;

@@ -14,6 +14,7 @@
 
 #include "core/affine.h"
 #include "gltf/gltf_file.h"
+#include "gltf/light_extension.h"
 #include "scene/light_source.h"
 
 namespace vlit {
@@ -21,9 +22,7 @@ namespace vlit {
 inline constexpr const char* kVlitLightsLinear = "VLIT_lights_linear";
 
 struct LinearLightDefinition {
-  std::string name;
-  Vec3d color{1, 1, 1};
-  double intensity = 1;  // cd per metre of the tube
+  LightEmission emission;  // intensity in cd per metre of the tube
   Vec3d from, to;        // node-local segment
   double falloff = 2;    // decay exponent n of paper eq. 1, in [0, 3]
 };

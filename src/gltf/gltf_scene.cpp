@@ -3,16 +3,17 @@
 #include <cmath>
 #include <cstdint>
 #include <algorithm>
+#include <array>
 #include <functional>
 
 #include "core/affine.h"
 #include "core/input_error.h"
 #include "gltf/accessor_reader.h"
-#include "gltf/emissive_lights.h"
 #include "gltf/extension_object.h"
 #include "gltf/gltf_area_lights.h"
 #include "gltf/gltf_linear_lights.h"
 #include "mesh/vertex_normals.h"
+#include "scene/emissive_lights.h"
 
 namespace vlit {
 namespace {
@@ -26,31 +27,11 @@ Affine local_transform(const tinygltf::Node& node) {
     return a;
   }
   Vec3d t{0, 0, 0}, s{1, 1, 1};
-  double qx = 0, qy = 0, qz = 0, qw = 1;
+  std::array<double, 4> q{0, 0, 0, 1};
   if (node.translation.size() == 3) t = {node.translation[0], node.translation[1], node.translation[2]};
   if (node.scale.size() == 3) s = {node.scale[0], node.scale[1], node.scale[2]};
-  if (node.rotation.size() == 4) {
-    qx = node.rotation[0]; qy = node.rotation[1]; qz = node.rotation[2]; qw = node.rotation[3];
-    const double len = std::sqrt(qx * qx + qy * qy + qz * qz + qw * qw);
-    if (len > 0) { qx /= len; qy /= len; qz /= len; qw /= len; }
-  }
-  const double rot[3][3] = {
-      {1 - 2 * (qy * qy + qz * qz), 2 * (qx * qy - qz * qw), 2 * (qx * qz + qy * qw)},
-      {2 * (qx * qy + qz * qw), 1 - 2 * (qx * qx + qz * qz), 2 * (qy * qz - qx * qw)},
-      {2 * (qx * qz - qy * qw), 2 * (qy * qz + qx * qw), 1 - 2 * (qx * qx + qy * qy)}};
-  const double scale[3] = {s.x, s.y, s.z};
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) a.m[r][c] = rot[r][c] * scale[c];
-    a.m[r][3] = t[r];
-  }
-  return a;
-}
-
-bool finite_affine(const Affine& a) {
-  for (const auto& row : a.m)
-    for (double v : row)
-      if (!std::isfinite(v)) return false;
-  return true;
+  if (node.rotation.size() == 4) q = {node.rotation[0], node.rotation[1], node.rotation[2], node.rotation[3]};
+  return Affine::from_trs(t, q, s);
 }
 
 Vec3d vec3_at(const std::vector<double>& data, std::size_t i) { return {data[3 * i], data[3 * i + 1], data[3 * i + 2]}; }
@@ -99,27 +80,120 @@ std::vector<Vec3f> read_vertex_colors(const GltfFile& file, int accessor, std::s
   return colors;
 }
 
-// An emissive LINES / LINE_STRIP / LINE_LOOP primitive: one linear light per segment.
+
+// The primitive's POSITION accessor, nullptr when it has none; throws unless it is a VEC3 accessor.
+const tinygltf::Accessor* position_accessor(const GltfFile& file, const tinygltf::Primitive& prim, const std::string& where) {
+  const auto it = prim.attributes.find("POSITION");
+  if (it == prim.attributes.end()) return nullptr;
+  const tinygltf::Model& model = file.model;
+  if (it->second < 0 || static_cast<std::size_t>(it->second) >= model.accessors.size() ||
+      model.accessors[it->second].type != TINYGLTF_TYPE_VEC3)
+    throw InputError(file.path, "POSITION must be a VEC3 accessor", where);
+  return &model.accessors[it->second];
+}
+
+// Adds `count` vertices to the running total, throwing beyond limits.max_vertices. Limits are
+// checked from the accessor counts alone, before anything is allocated. (Running totals, not
+// scene.vertex_count(): that is a loop over the primitives, quadratic here.)
+void count_vertices(std::size_t count, const SceneLimits& limits, BuildState& state, const std::string& file,
+                    const std::string& where) {
+  if (count > limits.max_vertices - std::min(state.vertices_so_far, limits.max_vertices))
+    throw InputError(file, limit_message("vertices", limits.max_vertices), where);
+  state.vertices_so_far += count;
+}
+
+// Adds the triangle corners of a primitive drawing `draw_count` indices in `mode` to the running
+// total, throwing beyond kCornersPerVertex x max_vertices.
+void count_corners(std::size_t draw_count, int mode, const SceneLimits& limits, BuildState& state, const std::string& file,
+                   const std::string& where) {
+  const std::size_t max_corners =
+      limits.max_vertices > SIZE_MAX / (3 * SceneLimits::kCornersPerVertex) ? SIZE_MAX / 3
+                                                                            : limits.max_vertices * SceneLimits::kCornersPerVertex;
+  if (draw_count > max_corners) throw InputError(file, limit_message("triangle corners", max_corners), where);
+  // A strip or a fan of n indices makes n - 2 triangles.
+  const std::size_t corners = mode == TINYGLTF_MODE_TRIANGLES ? draw_count : 3 * draw_count;
+  if (corners > max_corners - std::min(state.corners_so_far, max_corners))
+    throw InputError(file, limit_message("triangle corners", max_corners), where);
+  state.corners_so_far += corners;
+}
+
+// The accessor's positions (3 doubles each) in world space, non-finite ones included.
+std::vector<Vec3d> world_positions(const std::vector<double>& pos, const Affine& world) {
+  std::vector<Vec3d> out(pos.size() / 3);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = world.apply_point(vec3_at(pos, i));
+  return out;
+}
+
+// An emissive LINES / LINE_STRIP / LINE_LOOP primitive: one linear light per segment; a segment
+// with a non-finite end makes no light.
 void read_emissive_lines(const GltfFile& file, const tinygltf::Primitive& prim, int mode, const std::string& where,
                          const Affine& world, const Material& material, const SceneLimits& limits, BuildState& state) {
-  const tinygltf::Model& model = file.model;
-  const auto pos_it = prim.attributes.find("POSITION");
-  if (pos_it == prim.attributes.end()) return;
-  if (pos_it->second < 0 || static_cast<std::size_t>(pos_it->second) >= model.accessors.size() ||
-      model.accessors[pos_it->second].type != TINYGLTF_TYPE_VEC3)
-    throw InputError(file.path, "POSITION must be a VEC3 accessor", where);
-  const std::size_t count = model.accessors[pos_it->second].count;
-  if (count > limits.max_vertices - std::min(state.vertices_so_far, limits.max_vertices))
-    throw InputError(file.path, limit_message("vertices", limits.max_vertices), where);
-  state.vertices_so_far += count;
-  const std::vector<double> pos = read_accessor_as_doubles(model, pos_it->second, file.path);
-  const std::size_t vertex_count = pos.size() / 3;
-  const std::vector<std::uint32_t> draw_order = draw_order_of(model, prim, vertex_count, file.path);
-  std::vector<Vec3d> positions(vertex_count);
-  for (std::size_t i = 0; i < vertex_count; ++i) positions[i] = world.apply_point(vec3_at(pos, i));
+  const tinygltf::Accessor* pos_acc = position_accessor(file, prim, where);
+  if (!pos_acc) return;
+  count_vertices(pos_acc->count, limits, state, file.path, where);
+  const std::vector<double> pos = read_accessor_as_doubles(file.model, prim.attributes.at("POSITION"), file.path);
+  const std::vector<Vec3d> positions = world_positions(pos, world);
+  const std::vector<std::uint32_t> draw_order = draw_order_of(file.model, prim, positions.size(), file.path);
   auto lights = emissive_line_lights(positions, line_segments(mode, draw_order), material, file.path + ": " + where);
   for (auto& l : lights)
     if (is_finite(l.from) && is_finite(l.to)) state.emissive_lights.add(std::move(l));
+}
+
+// Non-finite positions set to the origin; returns which vertices they were (empty when none).
+std::vector<bool> zero_non_finite(std::vector<Vec3d>& positions) {
+  std::vector<bool> bad;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!is_finite(positions[i])) {
+      if (bad.empty()) bad.assign(positions.size(), false);
+      bad[i] = true;
+      positions[i] = {};
+    }
+  return bad;
+}
+
+// Keeps the triangles (3 indices each) none of whose corners is `bad`.
+void drop_triangles_touching(std::vector<std::uint32_t>& triangles, const std::vector<bool>& bad) {
+  std::vector<std::uint32_t> kept;
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+    if (!bad[triangles[t]] && !bad[triangles[t + 1]] && !bad[triangles[t + 2]])
+      kept.insert(kept.end(), triangles.begin() + t, triangles.begin() + t + 3);
+  triangles = std::move(kept);
+}
+
+// World-space unit normals of `out` (whose positions and triangles are set): the NORMAL
+// attribute transformed by the world transform, a zero or non-finite one replaced by the
+// angle-weighted normal of the triangles (with a warning); all computed without the attribute.
+void set_normals(const GltfFile& file, const tinygltf::Primitive& prim, const std::string& where, const Affine& world,
+                 ScenePrimitive& out, std::vector<std::string>& warnings) {
+  const tinygltf::Model& model = file.model;
+  const std::size_t vertex_count = out.positions.size();
+  const auto normal_it = prim.attributes.find("NORMAL");
+  if (normal_it == prim.attributes.end()) {
+    out.normals = angle_weighted_normals(out.positions, out.triangles);
+    return;
+  }
+  // Compare counts before reading: a NORMAL accessor without a bufferView could be huge.
+  if (normal_it->second >= 0 && static_cast<std::size_t>(normal_it->second) < model.accessors.size() &&
+      model.accessors[normal_it->second].count != vertex_count)
+    throw InputError(file.path, "NORMAL and POSITION counts differ", where);
+  const std::vector<double> nrm = read_accessor_as_doubles(model, normal_it->second, file.path);
+  if (nrm.size() != 3 * vertex_count) throw InputError(file.path, "NORMAL and POSITION counts differ", where);
+  std::vector<Vec3d> computed;
+  out.normals.resize(vertex_count);
+  std::size_t repaired = 0;
+  for (std::size_t i = 0; i < vertex_count; ++i) {
+    const Vec3d n = normalize(world.apply_normal(vec3_at(nrm, i)));
+    if (length_squared(n) == 0 || !is_finite(n)) {
+      if (computed.empty()) computed = angle_weighted_normals(out.positions, out.triangles);
+      out.normals[i] = computed[i];
+      ++repaired;
+    } else {
+      out.normals[i] = n;
+    }
+  }
+  if (repaired > 0)
+    warnings.push_back(file.path + ": " + where + ": " + std::to_string(repaired) +
+                       " zero or non-finite normals replaced by normals computed from the triangles");
 }
 
 void read_primitive(const GltfFile& file, int node_index, int mesh_index, int prim_index, const Affine& world,
@@ -137,97 +211,35 @@ void read_primitive(const GltfFile& file, int node_index, int mesh_index, int pr
     warnings.push_back(file.path + ": " + where + ": skipped (mode " + std::to_string(mode) + " is not triangles)");
     return;
   }
-  std::size_t& vertices_so_far = state.vertices_so_far;
-  std::size_t& corners_so_far = state.corners_so_far;
-  const auto pos_it = prim.attributes.find("POSITION");
-  if (pos_it == prim.attributes.end()) {
+  const tinygltf::Accessor* pos_acc = position_accessor(file, prim, where);
+  if (!pos_acc) {
     warnings.push_back(file.path + ": " + where + ": skipped (no POSITION attribute)");
     return;
   }
-  const tinygltf::Accessor* pos_acc = pos_it->second >= 0 && static_cast<std::size_t>(pos_it->second) < model.accessors.size()
-                                          ? &model.accessors[pos_it->second] : nullptr;
-  if (!pos_acc || pos_acc->type != TINYGLTF_TYPE_VEC3)
-    throw InputError(file.path, "POSITION must be a VEC3 accessor", where);
-  // Limits first, from the accessor counts alone: nothing is allocated for an asset beyond them.
-  // (Running totals, not scene.vertex_count(): that is a loop over the primitives, quadratic here.)
-  if (pos_acc->count > limits.max_vertices - std::min(vertices_so_far, limits.max_vertices))
-    throw InputError(file.path, limit_message("vertices", limits.max_vertices), where);
-  const std::size_t max_corners =
-      limits.max_vertices > SIZE_MAX / (3 * SceneLimits::kCornersPerVertex) ? SIZE_MAX / 3
-                                                                            : limits.max_vertices * SceneLimits::kCornersPerVertex;
+  count_vertices(pos_acc->count, limits, state, file.path, where);
   const std::size_t draw_count = prim.indices >= 0 && static_cast<std::size_t>(prim.indices) < model.accessors.size()
                                      ? model.accessors[prim.indices].count : pos_acc->count;
-  if (draw_count > max_corners) throw InputError(file.path, limit_message("triangle corners", max_corners), where);
-  // A strip or a fan of n indices makes n - 2 triangles.
-  const std::size_t corners = mode == TINYGLTF_MODE_TRIANGLES ? draw_count : 3 * draw_count;
-  if (corners > max_corners - std::min(corners_so_far, max_corners))
-    throw InputError(file.path, limit_message("triangle corners", max_corners), where);
-  corners_so_far += corners;
-  vertices_so_far += pos_acc->count;
-  const std::vector<double> pos = read_accessor_as_doubles(model, pos_it->second, file.path);
-  const std::size_t vertex_count = pos.size() / 3;
-
-  const std::vector<std::uint32_t> draw_order = draw_order_of(model, prim, vertex_count, file.path);
+  count_corners(draw_count, mode, limits, state, file.path, where);
 
   ScenePrimitive out;
   out.node = node_index;
   out.mesh = mesh_index;
   out.primitive = prim_index;
   out.material = prim.material;
-  out.triangles = triangle_list(mode, draw_order);
-  const bool mirrored = world.determinant() < 0;
-  if (mirrored)  // a mirroring transform flips winding: restore counter-clockwise front faces
+  out.positions = world_positions(read_accessor_as_doubles(model, prim.attributes.at("POSITION"), file.path), world);
+  out.triangles = triangle_list(mode, draw_order_of(model, prim, out.positions.size(), file.path));
+  if (world.determinant() < 0)  // a mirroring transform flips winding: restore counter-clockwise front faces
     for (std::size_t t = 0; t + 2 < out.triangles.size(); t += 3) std::swap(out.triangles[t + 1], out.triangles[t + 2]);
-
-  out.positions.resize(vertex_count);
-  std::size_t non_finite = 0;
-  std::vector<bool> bad;  // vertices with a non-finite position (filled only if there are any)
-  for (std::size_t i = 0; i < vertex_count; ++i) {
-    out.positions[i] = world.apply_point(vec3_at(pos, i));
-    if (!is_finite(out.positions[i])) { out.positions[i] = {}; ++non_finite; }
-  }
-  if (non_finite > 0) {
-    // Triangles touching a non-finite vertex are dropped; those vertices get no light.
-    warnings.push_back(file.path + ": " + where + ": " + std::to_string(non_finite) +
+  // Triangles touching a vertex with a non-finite position are dropped; those vertices get no light.
+  const std::vector<bool> bad = zero_non_finite(out.positions);
+  if (!bad.empty()) {
+    warnings.push_back(file.path + ": " + where + ": " + std::to_string(std::count(bad.begin(), bad.end(), true)) +
                        " vertices have non-finite positions; they receive no light");
-    bad.assign(vertex_count, false);
-    for (std::size_t i = 0; i < vertex_count; ++i) bad[i] = !is_finite(world.apply_point(vec3_at(pos, i)));
-    std::vector<std::uint32_t> kept;
-    for (std::size_t t = 0; t + 2 < out.triangles.size(); t += 3)
-      if (!bad[out.triangles[t]] && !bad[out.triangles[t + 1]] && !bad[out.triangles[t + 2]])
-        kept.insert(kept.end(), out.triangles.begin() + t, out.triangles.begin() + t + 3);
-    out.triangles = std::move(kept);
-  }
-
-  const auto normal_it = prim.attributes.find("NORMAL");
-  std::vector<Vec3d> computed;
-  if (normal_it != prim.attributes.end()) {
-    // Compare counts before reading: a NORMAL accessor without a bufferView could be huge.
-    if (normal_it->second >= 0 && static_cast<std::size_t>(normal_it->second) < model.accessors.size() &&
-        model.accessors[normal_it->second].count != vertex_count)
-      throw InputError(file.path, "NORMAL and POSITION counts differ", where);
-    const std::vector<double> nrm = read_accessor_as_doubles(model, normal_it->second, file.path);
-    if (nrm.size() != pos.size()) throw InputError(file.path, "NORMAL and POSITION counts differ", where);
-    out.normals.resize(vertex_count);
-    std::size_t repaired = 0;
-    for (std::size_t i = 0; i < vertex_count; ++i) {
-      const Vec3d n = normalize(world.apply_normal(vec3_at(nrm, i)));
-      if (length_squared(n) == 0 || !is_finite(n)) {
-        if (computed.empty()) computed = angle_weighted_normals(out.positions, out.triangles);
-        out.normals[i] = computed[i];
-        ++repaired;
-      } else {
-        out.normals[i] = n;
-      }
-    }
-    if (repaired > 0)
-      warnings.push_back(file.path + ": " + where + ": " + std::to_string(repaired) +
-                         " zero or non-finite normals replaced by normals computed from the triangles");
-  } else {
-    out.normals = angle_weighted_normals(out.positions, out.triangles);
+    drop_triangles_touching(out.triangles, bad);
   }
   if (const auto color_it = prim.attributes.find("COLOR_0"); state.vertex_colors && color_it != prim.attributes.end())
-    out.colors = read_vertex_colors(file, color_it->second, vertex_count, where);
+    out.colors = read_vertex_colors(file, color_it->second, out.positions.size(), where);
+  set_normals(file, prim, where, world, out, warnings);
   // A vertex whose position was not finite sits at the origin with a zero normal: every light
   // model gives zero for a zero normal, so it receives no light, as the warning says.
   for (std::size_t i = 0; i < bad.size(); ++i)
@@ -354,6 +366,17 @@ std::vector<std::uint32_t> triangle_list(int mode, const std::vector<std::uint32
   return tris;
 }
 
+std::vector<std::uint32_t> line_segments(int mode, const std::vector<std::uint32_t>& idx) {
+  std::vector<std::uint32_t> out;
+  if (mode == 1) {  // LINES
+    for (std::size_t i = 0; i + 1 < idx.size(); i += 2) out.insert(out.end(), {idx[i], idx[i + 1]});
+  } else if (mode == 3 || mode == 2) {  // LINE_STRIP, LINE_LOOP
+    for (std::size_t i = 0; i + 1 < idx.size(); ++i) out.insert(out.end(), {idx[i], idx[i + 1]});
+    if (mode == 2 && idx.size() > 2) out.insert(out.end(), {idx.back(), idx.front()});
+  }
+  return out;
+}
+
 SceneLimits default_scene_limits() { return SceneLimits{}; }
 
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneOptions& options) {
@@ -403,7 +426,7 @@ Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, cons
       throw InputError(file.path, "node " + std::to_string(index) + " is reached twice (a cycle or a node with two parents)");
     const tinygltf::Node& node = model.nodes[index];
     const Affine world = parent * local_transform(node);
-    if (!finite_affine(world)) throw InputError(file.path, "transform is not finite", "nodes[" + std::to_string(index) + "]");
+    if (!world.is_finite()) throw InputError(file.path, "transform is not finite", "nodes[" + std::to_string(index) + "]");
     if (node.mesh >= 0) {
       if (static_cast<std::size_t>(node.mesh) >= model.meshes.size())
         throw InputError(file.path, "mesh " + std::to_string(node.mesh) + " does not exist", "nodes[" + std::to_string(index) + "]");

@@ -43,12 +43,16 @@ struct SceneOptions {
 // malformed light extensions) or one beyond `limits`. Primitives that cannot be lit (points,
 // non-emissive lines, missing POSITION) are skipped with a warning appended to `warnings`.
 // Lights of the file: KHR_lights_punctual, EXT_lights_area (gltf_area_lights.h),
-// VLIT_lights_linear (gltf_linear_lights.h) and emissive geometry (emissive_lights.h), unless
+// VLIT_lights_linear (gltf_linear_lights.h) and emissive geometry (scene/emissive_lights.h), unless
 // options.file_lights is false.
 Scene build_scene(const GltfFile& file, std::vector<std::string>& warnings, const SceneOptions& options = {});
 
 // glTF primitive modes TRIANGLES, TRIANGLE_STRIP, TRIANGLE_FAN as a triangle list (3 indices per
 // triangle, consistent winding); `indices` are the primitive's vertex indices in draw order.
 std::vector<std::uint32_t> triangle_list(int mode, const std::vector<std::uint32_t>& indices);
+
+// glTF line modes LINES, LINE_STRIP, LINE_LOOP as a list of segments (2 indices each): LINES
+// pairs, LINE_STRIP consecutive indices, LINE_LOOP consecutive plus the closing segment.
+std::vector<std::uint32_t> line_segments(int mode, const std::vector<std::uint32_t>& indices);
 
 }  // namespace vlit

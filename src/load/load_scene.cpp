@@ -1,10 +1,10 @@
 #include "load/load_scene.h"
 
 #include "core/input_error.h"
-#include "gltf/emissive_lights.h"
 #include "gltf/gltf_scene.h"
 #include "io/lights_json.h"
 #include "mesh/mesh_file.h"
+#include "scene/emissive_lights.h"
 
 namespace vlit {
 

@@ -4,23 +4,15 @@
 #include <filesystem>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include "core/input_error.h"
 #include "gltf/gltf_scene.h"
 #include "mesh/obj_file.h"
+#include "mesh/openmesh_mesh.h"
 #include "mesh/vertex_normals.h"
 
 namespace vlit {
 namespace {
-
-struct MeshTraits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-  VertexAttributes(OpenMesh::Attributes::Normal);
-  FaceAttributes(OpenMesh::Attributes::Normal);
-};
-using TriMesh = OpenMesh::TriMesh_ArrayKernelT<MeshTraits>;
 
 std::string extension_of(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();

@@ -35,7 +35,7 @@ struct LightSource {
   Vec3d center, normal{0, 0, 1};    // disk: emits toward normal
   double radius = 1;
 
-  // A light made from a primitive's own emissive triangles (gltf/emissive_lights.h): index into
+  // A light made from a primitive's own emissive triangles (scene/emissive_lights.h): index into
   // Scene::primitives of that primitive, which this light does not light; -1 otherwise.
   long emitting_primitive = -1;
 

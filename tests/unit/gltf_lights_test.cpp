@@ -316,6 +316,14 @@ TEST_CASE("malformed light extensions: one-line errors naming the file and the p
        "lights[0].intensty: unknown property"},
       {"linear-falloff", "VLIT_lights_linear", obj({{"from", vec3(0, 0, 0)}, {"to", vec3(1, 0, 0)}, {"falloff", num(4)}}), 0,
        "falloff must be in [0, 3]"},
+      // The shared part of both extensions (gltf/light_extension.h), with each one's unit and name.
+      {"bad-intensity", "EXT_lights_area", obj({{"type", str("disk")}, {"intensity", num(-1)}}), 0,
+       "lights[0].intensity: intensity (nits) must be >= 0"},
+      {"linear-bad-intensity", "VLIT_lights_linear",
+       obj({{"from", vec3(0, 0, 0)}, {"to", vec3(1, 0, 0)}, {"intensity", num(-1)}}), 0,
+       "lights[0].intensity: intensity (cd per metre) must be >= 0"},
+      {"linear-missing-light", "VLIT_lights_linear", obj({{"from", vec3(0, 0, 0)}, {"to", vec3(1, 0, 0)}}), 1,
+       "nodes[1].extensions.VLIT_lights_linear.light: light 1 does not exist (the file defines 1 VLIT_lights_linear lights)"},
   };
   for (const Case& c : cases) {
     INFO(c.name);

@@ -1,4 +1,5 @@
-// Emissive geometry as lights (docs/gltf-lights.md "Emissive geometry"):
+// Emissive geometry as lights (docs/gltf-lights.md "Emissive geometry"), for every loader whose
+// scene can hold emissive materials (glTF: gltf/gltf_scene.cpp; OBJ with .mtl: load/load_scene.cpp):
 // - each segment of a LINES / LINE_STRIP / LINE_LOOP primitive with an emissive material is a
 //   linear light of Ip = emission x world length (emission read as candela per metre, as
 //   VLIT_lights_linear's intensity);
@@ -21,10 +22,6 @@
 namespace vlit {
 
 bool emits_light(const Material& material);
-
-// glTF line modes as a list of segments (2 indices each): LINES pairs, LINE_STRIP consecutive
-// indices, LINE_LOOP consecutive plus the closing segment.
-std::vector<std::uint32_t> line_segments(int mode, const std::vector<std::uint32_t>& indices);
 
 // One linear light per segment of non-zero length (world-space positions).
 std::vector<LightSource> emissive_line_lights(const std::vector<Vec3d>& positions, const std::vector<std::uint32_t>& segments,

@@ -1,4 +1,4 @@
-#include "gltf/emissive_lights.h"
+#include "scene/emissive_lights.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,17 +10,6 @@ namespace vlit {
 bool emits_light(const Material& material) {
   const Vec3d e = material.emission();
   return !material.emissive_texture && (e.x > 0 || e.y > 0 || e.z > 0) && is_finite(e);
-}
-
-std::vector<std::uint32_t> line_segments(int mode, const std::vector<std::uint32_t>& idx) {
-  std::vector<std::uint32_t> out;
-  if (mode == 1) {  // LINES
-    for (std::size_t i = 0; i + 1 < idx.size(); i += 2) out.insert(out.end(), {idx[i], idx[i + 1]});
-  } else if (mode == 3 || mode == 2) {  // LINE_STRIP, LINE_LOOP
-    for (std::size_t i = 0; i + 1 < idx.size(); ++i) out.insert(out.end(), {idx[i], idx[i + 1]});
-    if (mode == 2 && idx.size() > 2) out.insert(out.end(), {idx.back(), idx.front()});
-  }
-  return out;
 }
 
 std::vector<LightSource> emissive_line_lights(const std::vector<Vec3d>& positions, const std::vector<std::uint32_t>& segments,

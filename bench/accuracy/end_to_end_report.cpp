@@ -75,8 +75,8 @@ EndToEnd end_to_end(const Options& o) {
     return so;
   };
   settings.push_back({"reference: exact specular 1e-12, quadrature 1e-14", mk(SpecularMethod::kExact, 1e-12, 1e-14), false});
-  settings.push_back({"default: peak specular, quadrature 1e-10", mk(SpecularMethod::kPeak, 1e-9, 1e-10)});
-  settings.push_back({"accurate: exact specular 1e-9, quadrature 1e-10", mk(SpecularMethod::kExact, 1e-9, 1e-10)});
+  settings.push_back({"peak specular, quadrature 1e-10", mk(SpecularMethod::kPeak, 1e-9, 1e-10)});
+  settings.push_back({"default: exact specular 1e-9, quadrature 1e-10", mk(SpecularMethod::kExact, 1e-9, 1e-10)});
   settings.push_back({"fast exact: exact specular 1e-3, quadrature 1e-6", mk(SpecularMethod::kExact, 1e-3, 1e-6)});
   settings.push_back({"fast: peak specular, quadrature 1e-6", mk(SpecularMethod::kPeak, 1e-9, 1e-6)});
   settings.push_back({"diffuse only, quadrature 1e-6", mk(SpecularMethod::kNone, 1e-9, 1e-6)});

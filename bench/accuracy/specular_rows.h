@@ -23,7 +23,7 @@ void specular_method_rows(Section& sec, const Options& o, const CaseSet<X>& ordi
   const std::string set = "m 1..1e3";
   SpecularOptions peak;
   peak.method = SpecularMethod::kPeak;
-  method(sec, o, "peak", "peak (default)", set, "the lobe's maximum (not the integral)", ordinary, stiff, specular(peak), kAlways);
+  method(sec, o, "peak", "peak", set, "the lobe's maximum (not the integral)", ordinary, stiff, specular(peak), kAlways);
   for (int k : {1, 2, 4, 8, 16}) {
     SpecularOptions nb;
     nb.method = SpecularMethod::kNeighborhood;
@@ -36,7 +36,7 @@ void specular_method_rows(Section& sec, const Options& o, const CaseSet<X>& ordi
     ex.method = SpecularMethod::kExact;
     ex.exact_tolerance = tol;
     char name[64], promise[96];
-    std::snprintf(name, sizeof name, "exact tol %g%s", tol, tol == 1e-9 ? " (opt. default)" : "");
+    std::snprintf(name, sizeof name, "exact tol %g%s", tol, tol == 1e-9 ? " (default)" : "");
     std::snprintf(promise, sizeof promise, "relative %g (%s)", tol, exact_estimate);
     method(sec, o, "exact-" + tol_key(tol), name, set, promise, ordinary, stiff, specular(ex), kAlways);
   }

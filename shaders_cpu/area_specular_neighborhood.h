@@ -37,13 +37,18 @@ R neighborhood_half_angle(R m) {
   return std::min(kMaxSpread, std::atan2(sin_gamma, R(1) - one_minus_cos));
 }
 
-template <class R>
-R area_specular_neighborhood(const ClipPolygon<R>& poly, const AreaView<R>& view,
-                             const Vec3<R>& rv, R shininess, int samples) {
+// The rule with the visibility of the directions given: peak_seen says whether the peak
+// direction counts, ring_seen(dir) whether a ring direction does (a shadowed light passes its
+// visible pieces for both, src/shadow/shadowed_light.cpp; the unshadowed light counts its peak,
+// which lies on it, and tests the ring against the polygon).
+template <class R, class PeakSeen, class RingSeen>
+R area_specular_neighborhood_seen(const ClipPolygon<R>& poly, const AreaView<R>& view, const Vec3<R>& rv, R shininess,
+                                  int samples, const PeakSeen& peak_seen, const RingSeen& ring_seen) {
   const AreaPeak<R> peak = area_specular_peak_direction(poly, view, rv);
   if (!peak.visible) return R(0);
   const R peak_value = phong_lobe_from_angle(peak.angle, shininess);
-  if (samples <= 0 || peak_value == R(0)) return peak_value;
+  const int seen = peak_seen(peak.direction) ? 1 : 0;
+  if (samples <= 0 || peak_value == R(0)) return seen ? peak_value : R(0);
   // Orthonormal frame (t1, t2) around w*.
   const Vec3<R>& w = peak.direction;
   const Vec3<R> helper = std::abs(w.x) < R(0.6) ? Vec3<R>{1, 0, 0} : Vec3<R>{0, 1, 0};
@@ -55,9 +60,17 @@ R area_specular_neighborhood(const ClipPolygon<R>& poly, const AreaView<R>& view
   for (int k = 0; k < samples; ++k) {
     const R phi = R(2 * M_PI) * (R(k) + R(0.5)) / R(samples);
     const Vec3<R> dir = w * cg + (t1 * std::cos(phi) + t2 * std::sin(phi)) * sg;
-    if (ray_hits_polygon(poly, view, dir)) ++visible;
+    if (ring_seen(dir)) ++visible;
   }
-  return peak_value * R(1 + visible) / R(samples + 1);
+  return peak_value * R(seen + visible) / R(samples + 1);
+}
+
+template <class R>
+R area_specular_neighborhood(const ClipPolygon<R>& poly, const AreaView<R>& view,
+                             const Vec3<R>& rv, R shininess, int samples) {
+  return area_specular_neighborhood_seen(
+      poly, view, rv, shininess, samples, [](const Vec3<R>&) { return true; },
+      [&](const Vec3<R>& dir) { return ray_hits_polygon(poly, view, dir); });
 }
 
 }  // namespace vlit

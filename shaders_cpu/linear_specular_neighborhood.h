@@ -30,12 +30,23 @@
 
 namespace vlit {
 
-template <class A>
-A linear_specular_neighborhood_frame(const LinearFrame<A>& fr, A m, int k_samples) {
+// Every point of the segment counts (the unshadowed light).
+struct WholeSegment {
+  template <class A>
+  bool operator()(A) const { return true; }
+};
+
+// visible(t): whether the point Q(t), t in [0, 1], counts (a shadowed light passes the visible
+// sub-segments, src/shadow/shadowed_light.cpp); a hidden peak or sample adds 0.
+template <class A, class Visible = WholeSegment>
+A linear_specular_neighborhood_frame(const LinearFrame<A>& fr, A m, int k_samples, const Visible& visible = {}) {
   if (fr.empty) return A(0);
-  if (fr.zero_length) return fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, m) : A(0);
+  const A ds = fr.s1 - fr.s0;
+  auto t_of = [&](A s) { return ds != A(0) ? (s - fr.s0) / ds : A(0.5); };
+  if (fr.zero_length) return fr.mid_cos_n > A(0) && visible(A(0.5)) ? phong_power(fr.mid_cos_rv, m) : A(0);
   const A s_peak = linear_specular_peak_position(fr);
-  if (k_samples < 1 || fr.on_segment || !(fr.h > A(0))) return phong_power(linear_cos_rv(fr, s_peak), m);
+  if (k_samples < 1 || fr.on_segment || !(fr.h > A(0)))
+    return visible(t_of(s_peak)) ? phong_power(linear_cos_rv(fr, s_peak), m) : A(0);
   constexpr A kHalfPi = A(1.57079632679489661923);
   const A delta = std::fmin(kHalfPi, A(2) / std::sqrt(std::fmax(m, A(1))));
   const A theta_peak = std::atan2(s_peak, fr.h);
@@ -45,6 +56,7 @@ A linear_specular_neighborhood_frame(const LinearFrame<A>& fr, A m, int k_sample
   A sum{0};
   for (int k = 0; k < k_samples; ++k) {
     const A theta = lo + (hi - lo) * (A(k) + A(0.5)) / A(k_samples);
+    if (!visible(t_of(fr.h * std::tan(theta)))) continue;
     const A c = std::fmin(std::fmax(rv_h * std::cos(theta) + fr.br * std::sin(theta), A(-1)), A(1));
     sum += phong_power(c, m);
   }

@@ -23,34 +23,11 @@ SpecularOptions effective_specular(const ShadeOptions& options) {
 // when the window is unhidden.
 double linear_neighborhood_shadowed(const LinearLight<double>& light, const ShadingPoint<double>& sp, int k_samples,
                                     const std::vector<std::pair<double, double>>& visible) {
-  const LinearFrame<double> fr = make_linear_frame(light, sp);
-  const double m = sp.shininess;
-  if (fr.empty) return 0;
-  auto is_visible = [&](double t) {
+  return linear_specular_neighborhood_frame(make_linear_frame(light, sp), sp.shininess, k_samples, [&](double t) {
     for (const auto& [a, b] : visible)
       if (t >= a && t <= b) return true;
     return false;
-  };
-  if (fr.zero_length) return fr.mid_cos_n > 0 && is_visible(0.5) ? phong_power(fr.mid_cos_rv, m) : 0.0;
-  const double s_peak = linear_specular_peak_position(fr);
-  const double ds = fr.s1 - fr.s0;
-  auto t_of = [&](double s) { return ds != 0 ? (s - fr.s0) / ds : 0.5; };
-  if (k_samples < 1 || fr.on_segment || !(fr.h > 0))
-    return is_visible(t_of(s_peak)) ? phong_power(linear_cos_rv(fr, s_peak), m) : 0.0;
-  constexpr double kHalfPi = 1.57079632679489661923;
-  const double delta = std::fmin(kHalfPi, 2 / std::sqrt(std::fmax(m, 1.0)));
-  const double theta_peak = std::atan2(s_peak, fr.h);
-  const double lo = std::fmax(theta_peak - delta, std::atan2(fr.sa, fr.h));
-  const double hi = std::fmin(theta_peak + delta, std::atan2(fr.sb, fr.h));
-  const double rv_h = fr.ar / fr.h;
-  double sum = 0;
-  for (int k = 0; k < k_samples; ++k) {
-    const double theta = lo + (hi - lo) * (k + 0.5) / k_samples;
-    if (!is_visible(t_of(fr.h * std::tan(theta)))) continue;
-    const double c = std::fmin(std::fmax(rv_h * std::cos(theta) + fr.br * std::sin(theta), -1.0), 1.0);
-    sum += phong_power(c, m);
-  }
-  return sum / k_samples;
+  });
 }
 
 // Removes from `visible` (sorted, disjoint [t_a, t_b] intervals) the parameters t whose point
@@ -215,8 +192,6 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     // unshadowed value, equal to it when the peak and its ring are unhidden.
     ClipPolygon<double> lobe_horizon;  // a disk: its equal-area polygon's horizon clip
     if (disk) clip_to_horizon(disk_polygon, view, sp.n, lobe_horizon);
-    const AreaPeak<double> whole = area_specular_peak_direction(disk ? lobe_horizon : horizon, view, sp.rv);
-    const double peak_value = whole.visible ? phong_lobe_from_angle(whole.angle, sp.shininess) : 0.0;
     auto reaches_visible = [&](const Vec3d& dir) {
       for (std::size_t i = 0; i < pieces.size(); ++i) {
         const ClipPolygon<double>& lobe_piece = load(i, true);
@@ -224,21 +199,8 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
       }
       return false;
     };
-    const int samples = std::max(0, spec.neighborhood_samples);
-    int visible = reaches_visible(whole.direction) ? 1 : 0;
-    if (peak_value > 0 && samples > 0) {
-      const Vec3d& w = whole.direction;
-      const Vec3d helper = std::abs(w.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
-      const Vec3d t1 = normalize(cross(w, helper));
-      const Vec3d t2 = cross(w, t1);
-      const double gamma = neighborhood_half_angle(sp.shininess);
-      const double cg = std::cos(gamma), sg = std::sin(gamma);
-      for (int k = 0; k < samples; ++k) {
-        const double phi = 2 * M_PI * (k + 0.5) / samples;
-        visible += reaches_visible(w * cg + (t1 * std::cos(phi) + t2 * std::sin(phi)) * sg);
-      }
-    }
-    r.specular = peak_value * visible / (samples + 1);
+    r.specular = area_specular_neighborhood_seen(disk ? lobe_horizon : horizon, view, sp.rv, sp.shininess,
+                                                 spec.neighborhood_samples, reaches_visible, reaches_visible);
   }
   return r;
 }

@@ -155,6 +155,29 @@ double angle_between(const Vec3d& a, const Vec3d& b) {  // unit vectors; stable 
   return 2 * std::asin(std::min(1.0, length(a - b) / 2));
 }
 
+
+// Depth first over the tree from the root (children of a node pushed in one fixed order): a node
+// is entered when enter(node) is true; leaf(node) is called for every entered leaf and ends the
+// walk by returning true. Returns whether a leaf ended it.
+template <class Nodes, class Enter, class Leaf>
+bool descend(const Nodes& nodes, const Enter& enter, const Leaf& leaf) {
+  std::uint32_t stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const std::uint32_t self = stack[--top];
+    if (!enter(self)) continue;
+    const auto& node = nodes[self];
+    if (node.count > 0) {
+      if (leaf(self)) return true;
+    } else {
+      stack[top++] = node.first;
+      stack[top++] = self + 1;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 void OccluderBvh::build_cones() {
@@ -295,22 +318,14 @@ bool OccluderBvh::segment_occluded(const Vec3d& a, const Vec3d& b, const Vec3d& 
     return false;
   }
   const Vec3d d = b - a;
-  std::uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Node& node = nodes_[stack[--top]];
-    if (!segment_meets_box(a, d, t_min, t_max, node.box)) continue;
-    if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
-        if (test(order_[i])) return true;
-    } else {
-      const std::uint32_t self = static_cast<std::uint32_t>(&node - nodes_.data());
-      stack[top++] = node.first;
-      stack[top++] = self + 1;
-    }
-  }
-  return false;
+  return descend(
+      nodes_, [&](std::uint32_t self) { return segment_meets_box(a, d, t_min, t_max, nodes_[self].box); },
+      [&](std::uint32_t self) {
+        const Node& node = nodes_[self];
+        for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
+          if (test(order_[i])) return true;
+        return false;
+      });
 }
 
 void OccluderBvh::triangles_in_volume(const ConvexVolume& volume, const Vec3d& skip,
@@ -399,23 +414,19 @@ void OccluderBvh::visit_volume(const ConvexVolume& volume, const Prune& prune, c
     const double len = length(volume.planes[k].normal);
     planes[k] = {len > 0 ? volume.planes[k].normal / len : Vec3d{}, volume.planes[k].origin};
   }
-  std::uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const std::uint32_t self = stack[--top];
-    const Node& node = nodes_[self];
-    if (!node.box.overlaps(query)) continue;
-    bool outside = false;
-    for (int k = 0; k < plane_count && !outside; ++k) outside = box_outside_unit(node.box, planes[k]);
-    if (outside || prune(self)) continue;
-    if (node.count > 0) {
-      leaf(self);
-    } else {
-      stack[top++] = node.first;
-      stack[top++] = self + 1;
-    }
-  }
+  descend(
+      nodes_,
+      [&](std::uint32_t self) {
+        const Aabb& box = nodes_[self].box;
+        if (!box.overlaps(query)) return false;
+        for (int k = 0; k < plane_count; ++k)
+          if (box_outside_unit(box, planes[k])) return false;
+        return !prune(self);
+      },
+      [&](std::uint32_t self) {
+        leaf(self);
+        return false;
+      });
 }
 
 void OccluderBvh::triangles_near_segment(const Vec3d& a, const Vec3d& b, std::vector<std::uint32_t>& out) const {
@@ -425,20 +436,12 @@ void OccluderBvh::triangles_near_segment(const Vec3d& a, const Vec3d& b, std::ve
     return;
   }
   const Vec3d d = b - a;
-  std::uint32_t stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const std::uint32_t self = stack[--top];
-    const Node& node = nodes_[self];
-    if (!segment_meets_box(a, d, 0, 1, node.box)) continue;
-    if (node.count > 0) {
-      for (std::uint32_t i = node.first; i < node.first + node.count; ++i) out.push_back(order_[i]);
-    } else {
-      stack[top++] = node.first;
-      stack[top++] = self + 1;
-    }
-  }
+  descend(
+      nodes_, [&](std::uint32_t self) { return segment_meets_box(a, d, 0, 1, nodes_[self].box); },
+      [&](std::uint32_t self) {
+        for (std::uint32_t i = nodes_[self].first; i < nodes_[self].first + nodes_[self].count; ++i) out.push_back(order_[i]);
+        return false;
+      });
 }
 
 }  // namespace vlit

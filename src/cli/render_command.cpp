@@ -69,6 +69,54 @@ std::vector<raster::DrawMesh> normal_view_meshes(Scene& scene) {
   return meshes;
 }
 
+// Whether the scene is drawn as a glTF viewer shows a baked asset: asked (--preview), or a scene
+// without lights (none in the file, no --lights) that has COLOR_0; says why and what is left out.
+bool previews(const RenderArgs& args, const Scene& scene) {
+  const bool has_colors = std::any_of(scene.primitives.begin(), scene.primitives.end(),
+                                      [](const ScenePrimitive& p) { return !p.colors.empty(); });
+  const bool preview = args.preview || (scene.lights.empty() && has_colors);
+  if (preview && !args.preview && !args.quiet)
+    std::fprintf(stderr, "%s: no lights, and COLOR_0: drawing COLOR_0 x base colour unlit, as a glTF viewer shows a baked "
+                 "asset (--preview; pass --lights LIGHTS.json to light it)\n", args.input.c_str());
+  if (preview && std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.base_color_texture; }))
+    print_warning(args.input + ": base colour textures are not sampled; the preview shows COLOR_0 x baseColorFactor");
+  if (scene.lights.empty() && !preview)
+    print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
+  return preview;
+}
+
+// The rasterizer's options from the command line; a usage problem names the output.
+raster::RenderOptions render_options(const RenderArgs& args) {
+  raster::RenderOptions options;
+  options.width = args.width;
+  options.height = args.height;
+  options.samples = args.samples;
+  options.background = {static_cast<float>(args.background[0]), static_cast<float>(args.background[1]),
+                        static_cast<float>(args.background[2])};
+  options.cull_back_faces = args.cull_back_faces;
+  options.wireframe.enabled = args.view == "wireframe";
+  options.wireframe.width = args.wire_width;
+  if (const std::string problem = raster::validate_render_options(options); !problem.empty())
+    throw InputError(args.output, problem);
+  return options;
+}
+
+// The file's camera that --camera names (or its first), else a 3/4 view framing the scene; an
+// unusable camera is replaced by the framing view, with a warning.
+raster::Camera render_camera(const RenderArgs& args, const Scene& scene) {
+  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const auto& p : scene.primitives)
+    for (const auto& v : p.positions) { lo = min(lo, v); hi = max(hi, v); }
+  const double aspect = static_cast<double>(args.width) / args.height;
+  const std::optional<SceneCamera> chosen = choose_camera(scene, args.camera, args.input);
+  raster::Camera camera = chosen ? raster::camera_from_scene(*chosen) : raster::frame_bounds(lo, hi, aspect);
+  if (const std::string problem = raster::validate_camera(camera); !problem.empty()) {
+    print_warning(args.input + ": camera unusable (" + problem + "); framing the scene instead");
+    camera = raster::frame_bounds(lo, hi, aspect);
+  }
+  return camera;
+}
+
 int run_render(const RenderArgs& args) {
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -86,40 +134,10 @@ int run_render(const RenderArgs& args) {
   const Scene& scene = loaded.scene;
   const double load_seconds = since(t);
   const bool normals_view = args.view == "normals";
-  const bool has_colors = std::any_of(scene.primitives.begin(), scene.primitives.end(),
-                                      [](const ScenePrimitive& p) { return !p.colors.empty(); });
-  // A baked asset without lights (none in the file, no --lights) is previewed as a viewer shows it.
-  const bool preview = !normals_view && (args.preview || (scene.lights.empty() && has_colors));
-  if (preview && !args.preview && !args.quiet)
-    std::fprintf(stderr, "%s: no lights, and COLOR_0: drawing COLOR_0 x base colour unlit, as a glTF viewer shows a baked "
-                 "asset (--preview; pass --lights LIGHTS.json to light it)\n", args.input.c_str());
-  if (preview && std::any_of(scene.materials.begin(), scene.materials.end(), [](const Material& m) { return m.base_color_texture; }))
-    print_warning(args.input + ": base colour textures are not sampled; the preview shows COLOR_0 x baseColorFactor");
-  if (scene.lights.empty() && !normals_view && !preview)
-    print_warning(args.input + ": no lights (pass --lights LIGHTS.json); the image will be black");
+  const bool preview = !normals_view && previews(args, scene);
 
-  raster::RenderOptions options;
-  options.width = args.width;
-  options.height = args.height;
-  options.samples = args.samples;
-  options.background = {static_cast<float>(args.background[0]), static_cast<float>(args.background[1]),
-                        static_cast<float>(args.background[2])};
-  options.cull_back_faces = args.cull_back_faces;
-  options.wireframe.enabled = args.view == "wireframe";
-  options.wireframe.width = args.wire_width;
-  if (const std::string problem = raster::validate_render_options(options); !problem.empty())
-    throw InputError(args.output, problem);
-
-  Vec3d lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (const auto& p : scene.primitives)
-    for (const auto& v : p.positions) { lo = min(lo, v); hi = max(hi, v); }
-  const double aspect = static_cast<double>(args.width) / args.height;
-  const std::optional<SceneCamera> chosen = choose_camera(scene, args.camera, args.input);
-  raster::Camera camera = chosen ? raster::camera_from_scene(*chosen) : raster::frame_bounds(lo, hi, aspect);
-  if (const std::string problem = raster::validate_camera(camera); !problem.empty()) {
-    print_warning(args.input + ": camera unusable (" + problem + "); framing the scene instead");
-    camera = raster::frame_bounds(lo, hi, aspect);
-  }
+  const raster::RenderOptions options = render_options(args);
+  const raster::Camera camera = render_camera(args, scene);
 
   double plan_seconds = 0, light_seconds = 0;
   std::optional<ScenePlan> plan;

@@ -204,6 +204,25 @@ ScenePrimitive crossing_sheet() {
   return p;
 }
 
+// The crease floor, its crease vertex's normal set to `tilted`, and the crossing sheet: the
+// vertex's one wedge and the BVH of both primitives' triangles.
+struct SheetScene {
+  Vec3d tilted;
+  ScenePrimitive floor = crease_floor(), sheet = crossing_sheet();
+  CreaseWedges wedges;
+  OccluderBvh bvh;
+  explicit SheetScene(const Vec3d& normal) : tilted(normal), bvh(make_bvh({})) {
+    floor.normals[kCreaseVertex] = tilted;
+    Scene scene;
+    scene.primitives = {floor, sheet};
+    wedges = SharedPositions(scene).wedges_of(0);
+    REQUIRE(wedges.of(kCreaseVertex).size() == 1);
+    std::vector<Tri> occluders = triangles_of(floor);
+    for (const Tri& t : triangles_of(sheet)) occluders.push_back(t);
+    bvh = make_bvh(occluders);
+  }
+};
+
 // A panel in the plane y = -2 emitting toward +y, x in [x0, x1], z in [z0, z1].
 std::vector<Vec3d> wall_panel(double x0, double x1, double z0, double z1) {
   return {{x0, -2, z0}, {x0, -2, z1}, {x1, -2, z1}, {x1, -2, z0}};
@@ -216,18 +235,10 @@ TEST_CASE("crease wedges: a wedge partly behind the fan's face hides only its pa
   // under the floor's plane. The sheet's wedge spans directions with x < 0 and |z| <= -y on both
   // sides of the floor's plane; only its part above the floor (z >= 0, in front of the fan's face)
   // hides anything: below it, the fan's points are reached only through the fan itself.
-  ScenePrimitive floor = crease_floor();
-  const Vec3d tilted = normalize(Vec3d{0, -1, 1});
-  floor.normals[kCreaseVertex] = tilted;
-  const ScenePrimitive sheet = crossing_sheet();
-  Scene scene;
-  scene.primitives = {floor, sheet};
-  const CreaseWedges wedges = SharedPositions(scene).wedges_of(0);
-  REQUIRE(wedges.of(kCreaseVertex).size() == 1);
-  std::vector<Tri> occluders = triangles_of(floor);
-  for (const Tri& t : triangles_of(sheet)) occluders.push_back(t);
-  const OccluderBvh bvh = make_bvh(occluders);
-  const ShadingPoint<double> sp = make_shading_point(floor.positions[kCreaseVertex], tilted, Vec3d{0.3, -4, 1}, 8.0);
+  const SheetScene s(normalize(Vec3d{0, -1, 1}));
+  const CreaseWedges& wedges = s.wedges;
+  const OccluderBvh& bvh = s.bvh;
+  const ShadingPoint<double> sp = make_shading_point(s.floor.positions[kCreaseVertex], s.tilted, Vec3d{0.3, -4, 1}, 8.0);
   const ShadeOptions options = options_with(SpecularMethod::kExact);
 
   SUBCASE("area light across the floor's plane: the part under it stays lit") {
@@ -276,18 +287,10 @@ TEST_CASE("crease wedges: a tube that meets a wedge only under the horizon takes
   // z = -0.3 x: its points in the sheet's wedge (x < 0, z > 0) are all under the horizon, its
   // points over the horizon (x > 0) lie under the floor's plane, outside the wedge. Nothing is
   // removed, and the value is the unshadowed kernel's, bit for bit.
-  ScenePrimitive floor = crease_floor();
-  const Vec3d tilted = normalize(Vec3d{1, 0, 1});
-  floor.normals[kCreaseVertex] = tilted;
-  const ScenePrimitive sheet = crossing_sheet();
-  Scene scene;
-  scene.primitives = {floor, sheet};
-  const CreaseWedges wedges = SharedPositions(scene).wedges_of(0);
-  REQUIRE(wedges.of(kCreaseVertex).size() == 1);
-  std::vector<Tri> occluders = triangles_of(floor);
-  for (const Tri& t : triangles_of(sheet)) occluders.push_back(t);
-  const OccluderBvh bvh = make_bvh(occluders);
-  const ShadingPoint<double> sp = make_shading_point(floor.positions[kCreaseVertex], tilted, Vec3d{3, -4, 1}, 8.0);
+  const SheetScene s(normalize(Vec3d{1, 0, 1}));
+  const CreaseWedges& wedges = s.wedges;
+  const OccluderBvh& bvh = s.bvh;
+  const ShadingPoint<double> sp = make_shading_point(s.floor.positions[kCreaseVertex], s.tilted, Vec3d{3, -4, 1}, 8.0);
   for (const double falloff : {0.0, 2.0}) {
     CAPTURE(falloff);
     const auto prepared = prepare_light<double>(linear_source({-1, -2, 0.3}, {1, -2, -0.3}, falloff));

@@ -76,6 +76,9 @@ template <class T>
 struct PreparedDiskLight {
   AreaReal<T> radius{0};
   PreparedAreaLight<T> inscribed, circumscribed;  // same center, normal and frame (u, v)
+  // The regular 64-gon of the disk's area (the inscribed one scaled by
+  // sqrt(2 pi / (n sin(2 pi / n)))): the specular of a partly hidden disk (src/shadow/disk_pieces.h).
+  PreparedAreaLight<T> equal_area;
 };
 
 template <class T>
@@ -85,6 +88,12 @@ PreparedDiskLight<T> prepare_disk_light(const DiskLight<T>& light) {
   pd.radius = static_cast<R>(light.radius);
   pd.inscribed = disk_polygon(light, kDiskSpecularEdges, pd.radius);
   pd.circumscribed = disk_polygon(light, kDiskSpecularEdges, pd.radius / std::cos(R(M_PI) / R(kDiskSpecularEdges)));
+  pd.equal_area = pd.inscribed;
+  const int n = pd.equal_area.count;
+  const R scale = std::sqrt(R(2 * M_PI) / (R(n) * std::sin(R(2 * M_PI) / R(n))));
+  for (int i = 0; i < n; ++i) pd.equal_area.d[i] = pd.equal_area.d[i] * scale;
+  pd.equal_area.radius *= scale;
+  pd.equal_area.area = R(M_PI) * pd.radius * pd.radius;
   return pd;
 }
 

@@ -5,6 +5,8 @@
 
 #include <meshoptimizer.h>
 
+#include "gltf/accessor_reader.h"
+
 namespace vlit {
 namespace {
 
@@ -49,18 +51,36 @@ std::vector<Use> view_uses(const tinygltf::Model& model) {
 
 std::size_t element_bytes(const tinygltf::Accessor& acc) {
   const int components = tinygltf::GetNumComponentsInType(acc.type);
-  const int bytes = tinygltf::GetComponentSizeInBytes(acc.componentType);
+  const int bytes = component_bytes(acc.componentType);
   return components > 0 && bytes > 0 ? static_cast<std::size_t>(components) * bytes : 0;
 }
 
+// What encode_view needs to know of the whole model, gathered in one pass: the accessors that
+// read each view, and the accessors some primitive of another mode than triangles reads as its
+// indices.
+struct ViewReaders {
+  std::vector<std::vector<const tinygltf::Accessor*>> of_view;
+  std::vector<bool> non_triangle_indices;
+  explicit ViewReaders(const tinygltf::Model& model)
+      : of_view(model.bufferViews.size()), non_triangle_indices(model.accessors.size(), false) {
+    for (const tinygltf::Accessor& acc : model.accessors)
+      if (acc.bufferView >= 0 && static_cast<std::size_t>(acc.bufferView) < of_view.size())
+        of_view[acc.bufferView].push_back(&acc);
+    for (const tinygltf::Mesh& mesh : model.meshes)
+      for (const tinygltf::Primitive& prim : mesh.primitives)
+        if (prim.indices >= 0 && static_cast<std::size_t>(prim.indices) < model.accessors.size() &&
+            prim.mode != TINYGLTF_MODE_TRIANGLES)
+          non_triangle_indices[prim.indices] = true;
+  }
+};
+
 // The encoded bytes of view v, or empty when it is not eligible; sets stride, count and mode.
-std::string encode_view(const tinygltf::Model& model, std::size_t v, Use use, MeshoptEncoding::View& out) {
+std::string encode_view(const tinygltf::Model& model, const ViewReaders& all, std::size_t v, Use use,
+                        MeshoptEncoding::View& out) {
   const tinygltf::BufferView& view = model.bufferViews[v];
   if (view.buffer != 0 || view.byteLength == 0 || view.byteOffset + view.byteLength > model.buffers[0].data.size())
     return {};
-  std::vector<const tinygltf::Accessor*> readers;
-  for (const tinygltf::Accessor& acc : model.accessors)
-    if (acc.bufferView == static_cast<int>(v)) readers.push_back(&acc);
+  const std::vector<const tinygltf::Accessor*>& readers = all.of_view[v];
   if (readers.empty()) return {};
   const unsigned char* data = model.buffers[0].data.data() + view.byteOffset;
   if (use == Use::kAttribute) {
@@ -98,12 +118,8 @@ std::string encode_view(const tinygltf::Model& model, std::size_t v, Use use, Me
     largest = std::max(largest, indices[i]);
   }
   // A triangle list read whole by one accessor of triangles: the triangle codec.
-  bool triangles = readers.size() == 1 && readers[0]->byteOffset == 0 && readers[0]->count == count && count % 3 == 0;
-  for (const tinygltf::Mesh& mesh : model.meshes)
-    for (const tinygltf::Primitive& prim : mesh.primitives)
-      if (prim.indices >= 0 && static_cast<std::size_t>(prim.indices) < model.accessors.size() &&
-          &model.accessors[prim.indices] == readers[0] && prim.mode != TINYGLTF_MODE_TRIANGLES)
-        triangles = false;
+  const bool triangles = readers.size() == 1 && readers[0]->byteOffset == 0 && readers[0]->count == count &&
+                         count % 3 == 0 && !all.non_triangle_indices[readers[0] - model.accessors.data()];
   out.byte_stride = stride;
   out.count = count;
   out.mode = triangles ? "TRIANGLES" : "INDICES";
@@ -139,12 +155,13 @@ MeshoptEncoding encode_views_with_meshopt(tinygltf::Model& model) {
   MeshoptEncoding result;
   if (model.buffers.size() != 1) return result;
   const std::vector<Use> uses = view_uses(model);
+  const ViewReaders readers(model);
   std::vector<std::string> encoded(model.bufferViews.size());
   std::vector<MeshoptEncoding::View> info(model.bufferViews.size());
   bool any = false;
   for (std::size_t v = 0; v < model.bufferViews.size(); ++v) {
     if (uses[v] != Use::kAttribute && uses[v] != Use::kIndices) continue;
-    encoded[v] = encode_view(model, v, uses[v], info[v]);
+    encoded[v] = encode_view(model, readers, v, uses[v], info[v]);
     any = any || !encoded[v].empty();
   }
   if (!any) return result;

@@ -107,8 +107,10 @@ double edge_term(const AreaView<double>& view, const Vec3d& n, const Point2& a, 
 
 }  // namespace
 
-double disk_piece_diffuse(const AreaView<double>& view, double radius, const Vec3d& n, const ClipPolygon<double>& piece) {
+double disk_piece_diffuse(const AreaView<double>& view, const DiskFrame<double>& frame, const Vec3d& n,
+                          const ClipPolygon<double>& piece) {
   if (!view.lit || piece.count < 3) return 0;
+  const double radius = frame.big_r;
   std::array<Point2, kMaxClipVertices> corner;
   const int count = corners_ccw(piece, view, corner.data());
   double sum = 0;
@@ -132,7 +134,6 @@ double disk_piece_diffuse(const AreaView<double>& view, double radius, const Vec
     clip(boundary, radius, nx, ny, nx * a.x + ny * a.y, next);
     boundary.swap(next);
   }
-  const DiskFrame<double> frame = disk_frame(view, radius, n);
   for (const Element& e : boundary)
     sum += e.arc ? disk_arc_contour(view, frame, e.a0, e.a1, 0.5 * (e.a1 - e.a0)) : edge_term(view, n, e.p0, e.p1);
   return std::max(0.0, -0.5 * sum);

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "area_polygon.h"
+#include "disk_diffuse_contour.h"
 #include "disk_light.h"
 
 namespace vlit {
@@ -21,7 +22,9 @@ namespace vlit {
 // The diffuse (unit intensity, kd = 1) of piece ∩ disk. `view` is the disk's view from P (the
 // frame of disk.inscribed and disk.circumscribed), `piece` a convex polygon relative to the
 // disk's centre in the disk's plane, above P's horizon.
-double disk_piece_diffuse(const AreaView<double>& view, double radius, const Vec3d& n, const ClipPolygon<double>& piece);
+// `frame` is disk_frame(view, radius, n), the same for every piece seen from P.
+double disk_piece_diffuse(const AreaView<double>& view, const DiskFrame<double>& frame, const Vec3d& n,
+                          const ClipPolygon<double>& piece);
 
 // piece ∩ polygon (both convex, relative to the light's centre, in its plane), in `out`.
 void clip_piece_to_polygon(const ClipPolygon<double>& piece, const PreparedAreaLight<double>& polygon,

@@ -153,50 +153,52 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   if (nothing_reaches) return unoccluded();
   const LightPieces& pieces = *visible;
   Response<double> r;
-  ClipPolygon<double> piece, spec_piece;
-  thread_local PreparedAreaLight<double> disk_polygon;  // a disk's equal-area polygon, for the specular
-  if (disk) disk_polygon = equal_area_polygon(*disk);
-  // Piece i; with `for_specular`, of a disk, clipped to its equal-area polygon.
-  auto load = [&](std::size_t i, bool for_specular = false) -> const ClipPolygon<double>& {
-    const int n = pieces.start[i + 1] - pieces.start[i];
-    piece.count = n;
-    std::copy(pieces.points.begin() + pieces.start[i], pieces.points.begin() + pieces.start[i + 1], piece.d.begin());
-    if (!disk || !for_specular) return piece;
-    clip_piece_to_polygon(piece, disk_polygon, view, spec_piece);
-    return spec_piece;
+  ClipPolygon<double> piece;
+  auto load = [&](const LightPieces& from, std::size_t i) -> const ClipPolygon<double>& {
+    piece.count = from.start[i + 1] - from.start[i];
+    std::copy(from.points.begin() + from.start[i], from.points.begin() + from.start[i + 1], piece.d.begin());
+    return piece;
   };
+  // The pieces the specular methods read: a disk's, clipped once to its equal-area polygon.
+  const LightPieces* lobe_pieces = &pieces;
+  if (disk && spec.method != SpecularMethod::kNone) {
+    thread_local LightPieces clipped;
+    clipped.clear();
+    ClipPolygon<double> inside;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      clip_piece_to_polygon(load(pieces, i), disk->equal_area, view, inside);
+      if (inside.count >= 3) clipped.add(inside.d.data(), inside.count, view.u, view.v);
+    }
+    lobe_pieces = &clipped;
+  }
   AreaPeak<double> best;
   best.angle = 4;
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    load(i);
-    r.diffuse += disk ? disk_piece_diffuse(view, disk->radius, sp.n, piece) : area_diffuse_contour(light, view, piece, sp.n);
-    if (spec.method != SpecularMethod::kExact && spec.method != SpecularMethod::kPeak) continue;
-    const ClipPolygon<double>& lobe_piece = load(i, true);
-    if (lobe_piece.count < 3) continue;
-    switch (spec.method) {
-      case SpecularMethod::kExact:
+  if (disk) {
+    const DiskFrame<double> frame = disk_frame(view, disk->radius, sp.n);
+    for (std::size_t i = 0; i < pieces.size(); ++i) r.diffuse += disk_piece_diffuse(view, frame, sp.n, load(pieces, i));
+  } else {
+    for (std::size_t i = 0; i < pieces.size(); ++i) r.diffuse += area_diffuse_contour(light, view, load(pieces, i), sp.n);
+  }
+  if (spec.method == SpecularMethod::kExact || spec.method == SpecularMethod::kPeak)
+    for (std::size_t i = 0; i < lobe_pieces->size(); ++i) {
+      const ClipPolygon<double>& lobe_piece = load(*lobe_pieces, i);
+      if (spec.method == SpecularMethod::kExact) {
         r.specular += area_specular_exact_dispatch(lobe_piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
-        break;
-      case SpecularMethod::kPeak: {
+      } else {
         const AreaPeak<double> peak = area_specular_peak_direction(lobe_piece, view, sp.rv);
         if (peak.visible && peak.angle < best.angle) best = peak;
-        break;
       }
-      default: break;
     }
-  }
   if (best.visible && spec.method == SpecularMethod::kPeak) r.specular = phong_lobe_from_angle(best.angle, sp.shininess);
   if (spec.method == SpecularMethod::kNeighborhood && pieces.size() > 0) {
     // area_specular_neighborhood.h's rule on the whole light (its peak direction and ring), each
     // of the K + 1 directions counted only if it reaches a visible piece: never more than the
     // unshadowed value, equal to it when the peak and its ring are unhidden.
     ClipPolygon<double> lobe_horizon;  // a disk: its equal-area polygon's horizon clip
-    if (disk) clip_to_horizon(disk_polygon, view, sp.n, lobe_horizon);
+    if (disk) clip_to_horizon(disk->equal_area, view, sp.n, lobe_horizon);
     auto reaches_visible = [&](const Vec3d& dir) {
-      for (std::size_t i = 0; i < pieces.size(); ++i) {
-        const ClipPolygon<double>& lobe_piece = load(i, true);
-        if (lobe_piece.count >= 3 && ray_hits_polygon(lobe_piece, view, dir)) return true;
-      }
+      for (std::size_t i = 0; i < lobe_pieces->size(); ++i)
+        if (ray_hits_polygon(load(*lobe_pieces, i), view, dir)) return true;
       return false;
     };
     r.specular = area_specular_neighborhood_seen(disk ? lobe_horizon : horizon, view, sp.rv, sp.shininess,
@@ -213,17 +215,6 @@ double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
 }
 
 }  // namespace
-
-// The regular n-gon of the disk's area: its inscribed n-gon scaled by sqrt(2 pi / (n sin(2 pi / n))).
-PreparedAreaLight<double> equal_area_polygon(const PreparedDiskLight<double>& disk) {
-  PreparedAreaLight<double> polygon = disk.inscribed;
-  const int n = polygon.count;
-  const double scale = std::sqrt(2 * M_PI / (n * std::sin(2 * M_PI / n)));
-  for (int i = 0; i < n; ++i) polygon.d[i] = polygon.d[i] * scale;
-  polygon.radius *= scale;
-  polygon.area = M_PI * disk.radius * disk.radius;
-  return polygon;
-}
 
 template <class K>
 Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& sp, const ShadeOptions& options,

@@ -50,9 +50,7 @@ Response<double> shade_kernel_shadowed(const K& kernel, const ShadingPoint<doubl
 // disk_pieces.h).
 inline const PreparedAreaLight<double>& shadowed_polygon(const PreparedAreaLight<double>& area) { return area; }
 inline const PreparedAreaLight<double>& shadowed_polygon(const PreparedDiskLight<double>& disk) { return disk.circumscribed; }
-// A disk's equal-area regular 64-gon: the peak, neighbourhood and exact specular of a partly
-// hidden disk are those of its visible part of this polygon.
-PreparedAreaLight<double> equal_area_polygon(const PreparedDiskLight<double>& disk);
+
 
 // Dispatching form, range window included (as shade() in prepared_light.h).
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,

@@ -95,7 +95,7 @@ TEST_CASE("Ke becomes an area light as a glTF emissive triangle does, --no-file-
   CHECK(l.polygon.size() == 4);  // the two triangles merged into one quad
   CHECK(l.emitting_primitive == 3);
   CHECK(l.name.find("material light") != std::string::npos);
-  const LoadedScene no_lights = load_scene(obj, "", SceneOptions{.file_lights = false});
+  const LoadedScene no_lights = load_scene(obj, "", SceneOptions{.limits = {}, .file_lights = false});
   CHECK(no_lights.scene.lights.empty());
   CHECK(no_lights.scene.primitives.size() == 4);
 
@@ -123,7 +123,7 @@ TEST_CASE("the OBJ emitter lights the floor: the same panel as an explicit light
         << vlit::test::kLightCorners[i][2] << "]";
     j << "]}]}";
   }
-  const LoadedScene explicit_light = load_scene(obj, lights_json.string(), SceneOptions{.file_lights = false});
+  const LoadedScene explicit_light = load_scene(obj, lights_json.string(), SceneOptions{.limits = {}, .file_lights = false});
   LightingRequest request;
   const auto a = light_scene_vertices(with_emitter.scene, request);
   const auto b = light_scene_vertices(explicit_light.scene, request);

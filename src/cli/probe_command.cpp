@@ -4,7 +4,8 @@
 // over all lights at each point, 17 significant digits. With --occluders, the triangles of SCENE
 // (all meshes, transforms applied) hide the lights that cast shadows (docs/shadows.md); with
 // --snap-to-vertices, a point a few rounding errors off a vertex is moved onto it
-// (shadow/snap_to_vertices.h).
+// (shadow/snap_to_vertices.h) and shaded as that vertex is in a bake, with the wedges that
+// triangles across a crease hide from it (shadow/point_wedges.h).
 #include <cstdio>
 #include <iostream>
 #include <optional>
@@ -18,6 +19,7 @@
 #include "load/load_scene.h"
 #include "shading/prepared_light.h"
 #include "shadow/light_meter.h"
+#include "shadow/point_wedges.h"
 #include "shadow/snap_to_vertices.h"
 
 namespace vlit::cli {
@@ -33,7 +35,7 @@ struct ProbeArgs {
 
 template <class T>
 void probe(const std::vector<LightSource>& sources, const std::vector<ProbePoint>& points, const ShadeOptions& options,
-           const OccluderBvh* occluders) {
+           const OccluderBvh* occluders, const PointWedges* wedges) {
   std::vector<PreparedLight<T>> lights;
   for (const auto& s : sources) lights.push_back(prepare_light<T>(s));
   std::printf("index,diffuse,specular\n");
@@ -41,7 +43,8 @@ void probe(const std::vector<LightSource>& sources, const std::vector<ProbePoint
     const ProbePoint& p = points[i];
     const ShadingPoint<T> sp = make_shading_point(static_cast<Vec3<T>>(p.position), static_cast<Vec3<T>>(p.normal),
                                                   static_cast<Vec3<T>>(p.eye), T(p.shininess));
-    const auto [diffuse, specular] = light_meter(lights, sources, sp, options, occluders);
+    const auto [diffuse, specular] =
+        light_meter(lights, sources, sp, options, occluders, wedges ? wedges->of(i) : std::span<const WedgeCone>{});
     std::printf("%zu,%.17g,%.17g\n", i, diffuse, specular);
   }
 }
@@ -58,22 +61,27 @@ int run_probe(const ProbeArgs& args) {
   const auto lights = read_lights_json(args.lights);
   auto points = read_points_csv(args.points);
   std::optional<OccluderBvh> occluders;
+  std::optional<PointWedges> wedges;
   if (!args.occluders.empty()) {
     LoadedScene scene = load_scene(args.occluders, "", {SceneLimits{}, false});
     OccluderTriangles triangles = occluders_of(scene.scene);
     if (args.snap_to_vertices) {
-      std::vector<Vec3d> positions;
-      for (const ProbePoint& p : points) positions.push_back(p.position);
+      std::vector<Vec3d> positions, normals;
+      for (const ProbePoint& p : points) {
+        positions.push_back(p.position);
+        normals.push_back(p.normal);
+      }
       const SnapCount n = snap_to_vertices(triangles, positions);
       for (std::size_t i = 0; i < points.size(); ++i) points[i].position = positions[i];
       std::fprintf(stderr, "probe: %zu of %zu points on a vertex of %s", n.snapped, points.size(), args.occluders.c_str());
       if (n.ambiguous > 0) std::fprintf(stderr, "; %zu left alone (near several vertices)", n.ambiguous);
       std::fprintf(stderr, "\n");
+      if (options.crease_wedges) wedges.emplace(scene.scene, positions, normals);
     }
     occluders.emplace(std::move(triangles));
   }
-  if (args.precision == "float") probe<float>(lights, points, options, nullptr);
-  else probe<double>(lights, points, options, occluders ? &*occluders : nullptr);
+  if (args.precision == "float") probe<float>(lights, points, options, nullptr, nullptr);
+  else probe<double>(lights, points, options, occluders ? &*occluders : nullptr, wedges ? &*wedges : nullptr);
   return 0;
 }
 
@@ -94,7 +102,9 @@ Runner add_probe_command(CLI::App& app) {
       ->check(CLI::ExistingFile);
   cmd->add_flag("--snap-to-vertices", args->snap_to_vertices,
                 "With --occluders: a point within 1e-6 of the occluders' size of one of their vertices (and of no "
-                "other) is moved exactly onto it (points written in single precision by another program)");
+                "other) is moved exactly onto it (points written in single precision by another program), and "
+                "shaded as that vertex is in a bake: triangles across a crease hide what they hide from the "
+                "vertex whose normal is closest to the point's (docs/shadows.md)");
   cmd->footer("Output: index,diffuse,specular per point, kd = ks = 1, summed over all lights with their scalar intensity. "
               "With exact, the specular is Ip ∫ [L.N > 0] max(0, Rv.L̂)^m / |L|^n over the light (point, spot, "
               "linear; the area lights' solid-angle form), as docs/conventions.md defines it.");

@@ -263,11 +263,12 @@ template Response<double> shade_kernel_shadowed(const PreparedDiskLight<double>&
                                                 const SilhouetteCluster*, std::span<const WedgeCone>);
 
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
-                                const ShadeOptions& options, const OccluderBvh& occluders) {
+                                const ShadeOptions& options, const OccluderBvh& occluders,
+                                std::span<const WedgeCone> wedges) {
   const double window = range_window(light, sp.p);
   if (window <= 0) return {};
-  Response<double> r =
-      std::visit([&](const auto& k) { return shade_kernel_shadowed(k, sp, options, occluders); }, light.kernel);
+  Response<double> r = std::visit(
+      [&](const auto& k) { return shade_kernel_shadowed(k, sp, options, occluders, nullptr, wedges); }, light.kernel);
   r.diffuse *= window;
   r.specular *= window;
   return r;

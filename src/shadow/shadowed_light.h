@@ -52,8 +52,9 @@ inline const PreparedAreaLight<double>& shadowed_polygon(const PreparedAreaLight
 inline const PreparedAreaLight<double>& shadowed_polygon(const PreparedDiskLight<double>& disk) { return disk.circumscribed; }
 
 
-// Dispatching form, range window included (as shade() in prepared_light.h).
+// Dispatching form, range window included (as shade() in prepared_light.h); wedges as above.
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
-                                const ShadeOptions& options, const OccluderBvh& occluders);
+                                const ShadeOptions& options, const OccluderBvh& occluders,
+                                std::span<const WedgeCone> wedges = {});
 
 }  // namespace vlit

@@ -8,6 +8,8 @@
 
 #include "bake/light_vertices.h"
 #include "shadow/crease_wedges.h"
+#include "shadow/light_meter.h"
+#include "shadow/point_wedges.h"
 #include "shadow_test_util.h"
 
 using namespace vlit;
@@ -302,4 +304,46 @@ TEST_CASE("crease wedges: a tube that meets a wedge only under the horizon takes
     CHECK(got.diffuse == want.diffuse);
     CHECK(got.specular == want.specular);
   }
+}
+
+TEST_CASE("crease wedges: a probe point on a vertex takes that vertex's wedges (probe --snap-to-vertices)") {
+  Scene scene;
+  scene.primitives = {crease_floor(), crease_wall()};
+  scene.lights.push_back(area_source(panel(-0.2)));
+  const auto baked = bake(scene, true);
+  const auto unwedged = bake(scene, true, false);
+  std::vector<Tri> occluders = triangles_of(scene.primitives[0]);
+  for (const Tri& t : triangles_of(scene.primitives[1])) occluders.push_back(t);
+  const OccluderBvh bvh = make_bvh(occluders);
+  const std::vector<PreparedLight<double>> lights = {prepare_light<double>(scene.lights[0])};
+  ShadeOptions options;
+  options.with_specular = false;
+  // Every vertex of both primitives, at its own position, with a normal a little off its own (as a
+  // renderer's single-precision corner normal is): the probe gives the bake's value.
+  std::vector<Vec3d> positions, normals;
+  std::vector<float> want, without;
+  for (std::size_t pi = 0; pi < 2; ++pi)
+    for (std::size_t v = 0; v < scene.primitives[pi].positions.size(); ++v) {
+      positions.push_back(scene.primitives[pi].positions[v]);
+      normals.push_back(scene.primitives[pi].normals[v] + Vec3d{0, 0.01, 0});
+      want.push_back(baked[pi].diffuse[v].x);
+      without.push_back(unwedged[pi].diffuse[v].x);
+    }
+  // A point 1e-9 off the crease vertex stands on no vertex: no wedges.
+  positions.push_back(scene.primitives[0].positions[kCreaseVertex] + Vec3d{1e-9, 0, 0});
+  normals.push_back({0, 0, 1});
+  const PointWedges wedges(scene, positions, normals);
+  CHECK(wedges.on_vertex() == positions.size() - 1);
+  CHECK(wedges.of(positions.size() - 1).empty());
+  const double intensity = scene.lights[0].intensity;
+  for (std::size_t i = 0; i + 1 < positions.size(); ++i) {
+    CAPTURE(i);
+    const ShadingPoint<double> sp = make_shading_point(positions[i], normalize(scene.primitives[i < 25 ? 0 : 1].normals[i % 25]),
+                                                       Vec3d{0.3, 0.2, 5}, 8.0);
+    const double got = light_meter(lights, scene.lights, sp, options, &bvh, wedges.of(i)).diffuse / intensity;
+    CHECK(std::abs(got - want[i]) <= 1e-6 * std::max(double(want[i]), 1e-3));
+  }
+  // The crease vertex really is darker with its wedges; the wall's foot, at the same position, is not.
+  CHECK(want[kCreaseVertex] < 0.7f * without[kCreaseVertex]);
+  CHECK(want[25 + kWallFoot] == without[25 + kWallFoot]);
 }

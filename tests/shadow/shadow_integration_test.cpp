@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <fstream>
+#include <sstream>
 
 #include "bake/light_vertices.h"
 #include "core/input_error.h"
@@ -140,5 +141,50 @@ TEST_CASE("vlit probe --occluders: the scene's triangles (transforms applied) hi
   CHECK(alone.exit_code != 0);
   CHECK(alone.err.find("points.csv") != std::string::npos);
   CHECK(alone.err.find("--snap-to-vertices needs --occluders") != std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("vlit probe --snap-to-vertices: a point on a crease vertex takes the wedges of the vertex its normal names") {
+  const auto dir = temp_dir("probe-crease");
+  // A floor (z = 0, x in [0, 1]) and a wall (x = 0, facing +x) as two meshes sharing the vertices
+  // on the y axis; the probe points stand on (0, 0, 0), one with the floor's normal, one with the wall's.
+  GltfBuilder b;
+  const int floor = b.add_mesh({0, -1, 0, 1, -1, 0, 1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 0}, {},
+                               {0, 1, 2, 0, 2, 3, 3, 2, 4, 3, 4, 5});
+  const int wall = b.add_mesh({0, -1, 0, 0, 0, 0, 0, 1, 0, 0, -1, 1, 0, 0, 1, 0, 1, 1}, {},
+                              {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4});
+  b.add_node(floor, {0, 0, 0});
+  b.add_node(wall, {0, 0, 0});
+  const std::string scene = (dir / "crease.glb").string();
+  b.write(scene);
+  {
+    // A panel above the crease, partly behind the wall's plane (x < 0).
+    std::ofstream(dir / "lights.json")
+        << R"({"lights": [{"type": "area", "polygon": [[-0.7, -0.5, 2], [-0.7, 0.5, 2], [0.3, 0.5, 2], [0.3, -0.5, 2]]}]})";
+    std::ofstream(dir / "points.csv") << "px,py,pz,nx,ny,nz,ex,ey,ez,m\n0,0,0,0,0,1,0,0,5,10\n0,0,0,1,0,0,5,0,0,10\n";
+  }
+  const std::string common = std::string(VLIT_BINARY) + " probe --specular none --lights '" +
+                             (dir / "lights.json").string() + "' --points '" + (dir / "points.csv").string() +
+                             "' --occluders '" + scene + "'";
+  const CommandResult plain = run_command(common);
+  const CommandResult snapped = run_command(common + " --snap-to-vertices");
+  REQUIRE(plain.exit_code == 0);
+  REQUIRE(snapped.exit_code == 0);
+  CHECK(snapped.err.find("probe: 2 of 2 points on a vertex of") != std::string::npos);
+  auto diffuse = [](const std::string& out, int row) {
+    std::istringstream in(out);
+    std::string line;
+    for (int i = 0; i <= row + 1; ++i) std::getline(in, line);
+    return std::stod(line.substr(line.find(',') + 1));
+  };
+  // The floor's point: without wedges the wall (its triangles touch the point) hides nothing;
+  // with them it hides the part of the panel behind its plane, 0.7 of the panel's width and the
+  // larger part of its light.
+  MESSAGE("floor point: " << diffuse(plain.out, 0) << " without wedges, " << diffuse(snapped.out, 0) << " with");
+  CHECK(diffuse(snapped.out, 0) < 0.5 * diffuse(plain.out, 0));
+  CHECK(diffuse(snapped.out, 0) > 0);
+  // The wall's point: the floor's wedge lies below its horizon; nothing changes.
+  CHECK(diffuse(snapped.out, 1) == diffuse(plain.out, 1));
+  CHECK(diffuse(plain.out, 1) > 0);
   std::filesystem::remove_all(dir);
 }

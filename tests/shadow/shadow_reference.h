@@ -147,4 +147,28 @@ inline Estimate reference_linear(const Vec3d& q0, const Vec3d& q1, double fallof
   return acc.estimate(1.0);
 }
 
+// Exact specular of a linear light (conventions.h: intensity per unit of t; the lobe
+// [L.N > 0] max(0, Rv.L^)^m, times 1/|L|^n when `falloff_on_specular`), with shadow rays as
+// reference_linear's.
+inline Estimate reference_linear_specular(const Vec3d& q0, const Vec3d& q1, double falloff, bool falloff_on_specular,
+                                          const ReferencePoint& pt, const std::vector<Tri>& occluders, int samples,
+                                          unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> jitter(0.0, 1.0);
+  Accumulator acc;
+  const Vec3d rv = normalize(pt.rv);
+  for (int i = 0; i < samples; ++i) {
+    const double t = (i + jitter(rng)) / samples;
+    const Vec3d y = q0 + (q1 - q0) * t;
+    const Vec3d l = y - pt.p;
+    const double len = length(l);
+    const double c = dot(rv, l) / len;
+    double f = 0;
+    if (dot(l, pt.n) > 0 && c > 0 && !reference_blocked(pt.p, y, occluders))
+      f = std::pow(c, pt.m) / (falloff_on_specular ? std::pow(len, falloff) : 1.0);
+    acc.add(f);
+  }
+  return acc.estimate(1.0);
+}
+
 }  // namespace vlit::test

@@ -62,7 +62,8 @@ std::vector<Case> make_cases(int sides, int count) {
   std::vector<Case> out;
   while (int(out.size()) < count) {
     Case c;
-    const Vec3d p = random_unit(rng) * u01(rng);
+    const double distance = u01(rng);  // drawn first: the order GCC gave the unsequenced form
+    const Vec3d p = random_unit(rng) * distance;
     const Vec3d to_light = random_unit(rng);
     const Vec3d center = p + to_light * (1 + 2 * u01(rng));
     const Vec3d normal = normalize(-to_light + random_unit(rng) * 0.5);  // emits toward P

@@ -54,7 +54,8 @@ std::vector<AreaCase> ordinary_area_cases(int count) {
   std::vector<AreaCase> out;
   while (int(out.size()) < count) {
     AreaCase c;
-    c.p = random_unit(rng) * (2 * u01(rng));
+    const double distance = 2 * u01(rng);  // drawn first: the order GCC gave the unsequenced form
+    c.p = random_unit(rng) * distance;
     const Vec3d to_light = random_unit(rng);
     Vec3d centre = c.p + to_light * (1 + 2 * u01(rng));
     centre = {grid(centre.x, 1.0 / 64), grid(centre.y, 1.0 / 64), grid(centre.z, 1.0 / 64)};

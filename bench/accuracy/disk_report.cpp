@@ -46,7 +46,8 @@ std::vector<DiskQuery> ordinary_disk_cases(int count) {
   std::vector<DiskQuery> out;
   for (int i = 0; i < count; ++i) {
     DiskQuery q;
-    q.p = random_unit(rng) * (2 * u01(rng));
+    const double distance = 2 * u01(rng);  // drawn first: the order GCC gave the unsequenced form
+    q.p = random_unit(rng) * distance;
     const Vec3d to_light = random_unit(rng);
     q.center = q.p + to_light * (1 + 2 * u01(rng));
     q.normal = normalize(-to_light + random_unit(rng) * 0.6);

@@ -45,7 +45,8 @@ std::vector<Config> ordinary_linear_configs(int count) {
   std::vector<Config> out;
   for (int i = 0; i < count; ++i) {
     Config c;
-    c.p = random_unit(rng) * (2 * u01(rng));
+    const double distance = 2 * u01(rng);  // drawn first: the order GCC gave the unsequenced form
+    c.p = random_unit(rng) * distance;
     const Vec3d centre = c.p + random_unit(rng);
     const double len = log_uniform(rng, -1, 1);
     const Vec3d dir = random_unit(rng);

@@ -22,7 +22,7 @@ void BatchChunk::fill(const ShadingPoint<double>* points, long begin, long end) 
 }
 
 void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,
-                             const ShadingPoint<double>* points, long count, Vec3d* diffuse) {
+                             const ShadingPoint<double>* points, long count, Vec3d* diffuse, Vec3d* specular) {
   if (lights.empty() || count <= 0) return;
   constexpr long kBlock = 1024;  // lanes per task (whole blocks: the split never changes a lane's code path)
   const long blocks = (count + kBlock - 1) / kBlock;
@@ -41,9 +41,18 @@ void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& ligh
       for (long b = 0; b < blocks; ++b) {
         const long begin = b * kBlock, end = std::min(count, begin + kBlock);
         evaluate_diffuse_batch(batch, pts, begin, end, out);
+        if (!specular) {
+          for (long v = begin; v < end; ++v) {
+            const double id = out.stiff[v] ? shade(light, points[v], plan.shade).diffuse : static_cast<double>(out.diffuse[v]);
+            diffuse[v] += light.radiance * id;
+          }
+          continue;
+        }
+        // The specular by the scalar double kernel (its diffuse is the one the batch lane replaces).
         for (long v = begin; v < end; ++v) {
-          const double id = out.stiff[v] ? shade(light, points[v], plan.shade).diffuse : static_cast<double>(out.diffuse[v]);
-          diffuse[v] += light.radiance * id;
+          const Response<double> r = shade(light, points[v], plan.shade);
+          diffuse[v] += light.radiance * (out.stiff[v] ? r.diffuse : static_cast<double>(out.diffuse[v]));
+          specular[v] += light.radiance * r.specular;
         }
       }
     }

@@ -1,6 +1,7 @@
 // The bake's float batch path: the diffuse of the lights the scene plan gives a float batch kernel
 // (shading/batch_kernels.h), over a chunk of vertices; the lanes a kernel flags as stiff are
-// recomputed with the scalar double kernel. Used by light_vertices.cpp; everything else stays on
+// recomputed with the scalar double kernel. With specular on, these lights' specular is computed
+// here too, by the scalar double kernel. Used by light_vertices.cpp; everything else stays on
 // the scalar path there.
 #pragma once
 
@@ -29,13 +30,14 @@ class BatchChunk {
   std::vector<std::uint8_t> stiff_;
 };
 
-// diffuse[v] += radiance * Id(v) for every vertex of the chunk and every light of `lights`
+// diffuse[v] += radiance * Id(v), and specular[v] += radiance * Is(v) when `specular` is not null,
+// for every vertex of the chunk and every light of `lights`
 // (indices into plan.lights, each with plan.batch_of_light[i].light set), in that order, all
 // cores, in one parallel region: every thread takes the same blocks of vertices for every light
 // (static schedule), so there is no barrier between lights, which matters on a loaded machine.
 // The result for a vertex does not depend on the number of threads: blocks are whole and a lane's
 // float result is the same in any vector width (shaders_cpu/batch/batch_points.h).
 void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,
-                             const ShadingPoint<double>* points, long count, Vec3d* diffuse);
+                             const ShadingPoint<double>* points, long count, Vec3d* diffuse, Vec3d* specular);
 
 }  // namespace vlit

@@ -22,10 +22,6 @@ bool is_convex(const PreparedAreaLight<double>& a) {
 
 BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOptions& options) {
   BatchChoice c;
-  if (options.with_specular) {
-    c.reason = "specular needed";
-    return c;
-  }
   std::visit(
       [&](const auto& k) {
         using K = std::decay_t<decltype(k)>;

@@ -1,10 +1,11 @@
 // The SIMD batch kernels (shaders_cpu/batch/) behind one entry point, and the choice of which
 // prepared lights can use them.
 //
-// A light gets a batch kernel when only its diffuse is needed and its model has one: point, spot
-// and directional with integer falloff 0..3, linear with integer falloff 0..3 (closed forms),
-// convex area polygons, disks. Everything else (specular, real falloff, non-convex polygons)
-// stays on the scalar double kernels; batch_kernel_for says why.
+// A light's diffuse gets a batch kernel when its model has one: point, spot and directional with
+// integer falloff 0..3, linear with integer falloff 0..3 (closed forms), convex area polygons,
+// disks. Everything else (real falloff, non-convex polygons) stays on the scalar double kernels;
+// batch_kernel_for says why. With specular on, the diffuse keeps its batch kernel and the specular
+// is computed beside it (bake/batch_lighting.h): by the scalar double kernel, lane by lane.
 //
 // evaluate_diffuse_batch is compiled for AVX-512, AVX2 and baseline x86-64 and picks the variant
 // for the running CPU once, at load time (GCC function multiversioning): the release build stays
@@ -28,11 +29,12 @@ namespace vlit {
 using BatchLight = std::variant<PunctualBatchLight, LinearBatchLight, AreaBatchLight, DiskBatchLight>;
 
 struct BatchChoice {
-  std::optional<BatchLight> light;  // empty: the scalar double kernel runs
+  std::optional<BatchLight> light;  // the diffuse's batch kernel; empty: the scalar double kernel runs
   std::string reason;               // why not, when empty
 };
 
-// Whether `light` can use a float batch kernel under `options`, and its per-light constants.
+// Whether the diffuse of `light` can use a float batch kernel under `options`, and its per-light
+// constants. The specular (options.with_specular) does not change the choice.
 BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOptions& options);
 
 // Diffuse response (unit intensity, kd = 1, range window included) of one light at lanes

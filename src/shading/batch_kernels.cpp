@@ -92,6 +92,10 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
         }
       },
       light.kernel);
+  if (c.light && options.with_specular) {
+    if (std::holds_alternative<PunctualBatchLight>(*c.light)) c.specular_batch = true;
+    else c.specular_reason = "no batch specular kernel for this model";
+  }
   return c;
 }
 
@@ -109,6 +113,13 @@ void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, 
   else if (const auto* l = std::get_if<LinearBatchLight>(&light)) linear_diffuse_batch(*l, points, begin, end, out);
   else if (const auto* a = std::get_if<AreaBatchLight>(&light)) area_diffuse_batch(*a, points, begin, end, out);
   else if (const auto* d = std::get_if<DiskBatchLight>(&light)) disk_diffuse_batch(*d, points, begin, end, out);
+}
+
+VLIT_BATCH_CLONES
+void evaluate_specular_batch(const BatchLight& light, const SpecularOptions& specular, double m, const BatchPoints& points,
+                             long begin, long end, const BatchSpecularOutput& out) {
+  const bool with_falloff = specular.falloff == SpecularFalloff::kAsDiffuse;
+  if (const auto* p = std::get_if<PunctualBatchLight>(&light)) punctual_specular_batch(*p, with_falloff, m, points, begin, end, out);
 }
 
 const char* batch_instruction_set() {

@@ -5,7 +5,9 @@
 // integer falloff 0..3, linear with integer falloff 0..3 (closed forms), convex area polygons,
 // disks. Everything else (real falloff, non-convex polygons) stays on the scalar double kernels;
 // batch_kernel_for says why. With specular on, the diffuse keeps its batch kernel and the specular
-// is computed beside it (bake/batch_lighting.h): by the scalar double kernel, lane by lane.
+// is computed beside it (bake/batch_lighting.h): by a batch specular kernel where the model has one
+// (point, spot, directional: punctual_specular_batch.h), else by the scalar double kernel, lane by
+// lane.
 //
 // evaluate_diffuse_batch is compiled for AVX-512, AVX2 and baseline x86-64 and picks the variant
 // for the running CPU once, at load time (GCC function multiversioning): the release build stays
@@ -22,6 +24,7 @@
 #include "batch/disk_diffuse_batch.h"
 #include "batch/linear_diffuse_batch.h"
 #include "batch/punctual_diffuse_batch.h"
+#include "batch/punctual_specular_batch.h"
 #include "shading/prepared_light.h"
 
 namespace vlit {
@@ -31,6 +34,10 @@ using BatchLight = std::variant<PunctualBatchLight, LinearBatchLight, AreaBatchL
 struct BatchChoice {
   std::optional<BatchLight> light;  // the diffuse's batch kernel; empty: the scalar double kernel runs
   std::string reason;               // why not, when empty
+  // With specular on and `light` set: whether evaluate_specular_batch computes the specular, else
+  // why not (the scalar double kernel does).
+  bool specular_batch = false;
+  std::string specular_reason;
 };
 
 // Whether the diffuse of `light` can use a float batch kernel under `options`, and its per-light
@@ -41,6 +48,12 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
 // [begin, end) of `points`, with stiff lanes flagged (BatchOutput). No allocation.
 void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, long begin, long end,
                             const BatchOutput& out);
+
+// Specular response (unit intensity, ks = 1, range window included) of one light whose
+// BatchChoice::specular_batch is set, at lanes [begin, end) of `points` (rx, ry, rz set), with
+// shininess m and the specular falloff of `specular`; stiff lanes flagged. No allocation.
+void evaluate_specular_batch(const BatchLight& light, const SpecularOptions& specular, double m, const BatchPoints& points,
+                             long begin, long end, const BatchSpecularOutput& out);
 
 // Which instruction set evaluate_diffuse_batch runs with on this machine ("avx512", "avx2",
 // "baseline"), for --explain and the benchmark.

@@ -109,7 +109,9 @@ TEST_CASE("batch bake: the plan names the float batch kernels and why the others
   with_eye.eye = Vec3d{0, 0, 5};
   const std::string spec = describe(plan_lighting(scene, with_eye), scene);
   CHECK(spec.find("light quad: area contour integral (eq. 9), 17161 vertices, float SIMD batch") != std::string::npos);
-  CHECK(spec.find("; specular exact: scalar double\n", spec.find("light quad: ")) < spec.find('\n', spec.find("light quad: ")));
+  CHECK(spec.find("; specular exact: scalar double (no batch specular kernel for this model)\n", spec.find("light quad: ")) <
+        spec.find('\n', spec.find("light quad: ")));
+  CHECK(spec.find("; specular exact: double SIMD batch", spec.find("light spot: ")) < spec.find('\n', spec.find("light spot: ")));
   CHECK(spec.find("(non-convex polygon); specular exact: scalar double\n") != std::string::npos);
   LightingRequest scalar;
   scalar.float_batch = false;
@@ -183,4 +185,31 @@ TEST_CASE("batch bake with specular: diffuse and specular within 1e-5 of the sca
   const auto one = light_with_threads(scene, 1, true, eye)[0];
   CHECK(std::memcmp(one.specular.data(), batch.specular.data(), batch.specular.size() * sizeof(Vec3f)) == 0);
   CHECK(std::memcmp(one.diffuse.data(), batch.diffuse.data(), batch.diffuse.size() * sizeof(Vec3f)) == 0);
+}
+
+TEST_CASE("batch bake with specular: lanes the batch specular flags (light on the horizon) get the scalar result") {
+  // A light 1e-9 above the plane of a flat patch and the eye opposite it: N.L^ ~ 1e-9 flags every
+  // lane of the point light's batch specular (punctual_specular_batch.h), while the specular itself
+  // is near its maximum (Rv points at the light). The bake must take those lanes from the scalar kernel.
+  Scene scene;
+  ScenePrimitive patch;
+  for (int i = 0; i < 40; ++i) {
+    patch.positions.push_back({-0.01 + 0.0005 * i, 0.001 * (i % 3), 0});
+    patch.normals.push_back({0, 0, 1});
+  }
+  scene.primitives.push_back(patch);
+  LightSource point;
+  point.name = "horizon point";
+  point.position = {1, 0, 1e-9};
+  scene.lights.push_back(point);
+  const Vec3d eye{-1, 0, 1e-9};
+  LightingRequest request;
+  request.eye = eye;
+  REQUIRE(plan_lighting(scene, request).batch_of_light[0].specular_batch);
+  const auto batch = light_with_threads(scene, 2, true, eye)[0];
+  const auto scalar = light_with_threads(scene, 2, false, eye)[0];
+  double max_specular = 0;
+  for (const Vec3f& c : scalar.specular) max_specular = std::max(max_specular, double(c.x));
+  CHECK(max_specular > 0.5);
+  CHECK(worst_relative(batch.specular, scalar.specular) <= 1e-5);
 }

@@ -52,9 +52,9 @@ void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& ligh
           }
           continue;
         }
-        if (choice.specular_batch) {
-          // One material per primitive: every point of the chunk has the same shininess.
-          evaluate_specular_batch(batch, plan.shade.specular, points[begin].shininess, pts, begin, end, spec_out);
+        // One material per primitive: every point of the chunk has the same shininess.
+        if (specular_batch_covers(choice, points[begin].shininess)) {
+          evaluate_specular_batch(choice, plan.shade.specular, points[begin].shininess, pts, begin, end, spec_out);
           for (long v = begin; v < end; ++v) {
             if (out.stiff[v] | spec_out.stiff[v]) {
               const Response<double> r = shade(light, points[v], plan.shade);

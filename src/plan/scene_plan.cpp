@@ -198,7 +198,7 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
     }
     plan.source_of_light.push_back(li);
     if (options.float_batch) plan.batch_of_light.push_back(batch_kernel_for(plan.lights.back(), plan.shade));
-    else plan.batch_of_light.push_back({std::nullopt, "double precision requested", false, ""});
+    else plan.batch_of_light.push_back({std::nullopt, "double precision requested", false, "", std::nullopt});
     kept.push_back(&l);
   }
 

@@ -6,8 +6,11 @@
 // disks. Everything else (real falloff, non-convex polygons) stays on the scalar double kernels;
 // batch_kernel_for says why. With specular on, the diffuse keeps its batch kernel and the specular
 // is computed beside it (bake/batch_lighting.h): by a batch specular kernel where the model has one
-// (point, spot, directional: punctual_specular_batch.h), else by the scalar double kernel, lane by
-// lane.
+// (point, spot, directional: punctual_specular_batch.h), else by the scalar double kernel, lane
+// by lane. The exact specular of convex area polygons has a batch kernel too
+// (area_specular_batch.h, integer m), which the plan does not choose: measured no faster than
+// the scalar path, because the lanes its closed form refuses (11 % to 50 % on the benchmark's
+// floor) cost the scalar adaptive form either way (docs/performance.md, "Batch specular").
 //
 // evaluate_diffuse_batch is compiled for AVX-512, AVX2 and baseline x86-64 and picks the variant
 // for the running CPU once, at load time (GCC function multiversioning): the release build stays
@@ -20,6 +23,7 @@
 #include <variant>
 
 #include "batch/area_diffuse_batch.h"
+#include "batch/area_specular_batch.h"
 #include "batch/batch_points.h"
 #include "batch/disk_diffuse_batch.h"
 #include "batch/linear_diffuse_batch.h"
@@ -38,6 +42,8 @@ struct BatchChoice {
   // why not (the scalar double kernel does).
   bool specular_batch = false;
   std::string specular_reason;
+  // The area light's prepared polygon, for area_specular_batch.h (set with specular_batch).
+  std::optional<PreparedAreaLight<double>> area_specular;
 };
 
 // Whether the diffuse of `light` can use a float batch kernel under `options`, and its per-light
@@ -49,10 +55,19 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
 void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, long begin, long end,
                             const BatchOutput& out);
 
-// Specular response (unit intensity, ks = 1, range window included) of one light whose
-// BatchChoice::specular_batch is set, at lanes [begin, end) of `points` (rx, ry, rz set), with
+// Gives `choice` (a convex area light's diffuse choice, at most kAreaSpecularBatchMaxVertices
+// corners) the batch exact specular of area_specular_batch.h, which batch_kernel_for does not
+// choose; false when the light does not qualify. For tests and the benchmark.
+bool enable_area_specular_batch(BatchChoice& choice, const PreparedLight<double>& light);
+
+// Whether evaluate_specular_batch computes the specular of `choice`'s light for shininess m (area
+// lights: integer m in [0, kAreaSpecularBatchMaxShininess]; the others: any m).
+bool specular_batch_covers(const BatchChoice& choice, double m);
+
+// Specular response (unit intensity, ks = 1, range window included) of the light of `choice`
+// (specular_batch_covers(choice, m) true) at lanes [begin, end) of `points` (rx, ry, rz set), with
 // shininess m and the specular falloff of `specular`; stiff lanes flagged. No allocation.
-void evaluate_specular_batch(const BatchLight& light, const SpecularOptions& specular, double m, const BatchPoints& points,
+void evaluate_specular_batch(const BatchChoice& choice, const SpecularOptions& specular, double m, const BatchPoints& points,
                              long begin, long end, const BatchSpecularOutput& out);
 
 // Which instruction set evaluate_diffuse_batch runs with on this machine ("avx512", "avx2",

@@ -74,12 +74,13 @@ SpecComparison compare_specular(const std::string& what, const LightSource& sour
                                 SpecularFalloff falloff = SpecularFalloff::kAsDiffuse) {
   const ShadeOptions options = with_specular(falloff);
   const PreparedLight<double> light = prepare_light<double>(source);
-  const BatchChoice choice = batch_kernel_for(light, options);
+  BatchChoice choice = batch_kernel_for(light, options);
+  if (source.type == LightType::kArea) REQUIRE(enable_area_specular_batch(choice, light));
   REQUIRE_MESSAGE(choice.specular_batch, what << ": no batch specular kernel: " << choice.specular_reason);
   const long n = long(pts.px.size());
   std::vector<double> value(n, -1);
   std::vector<std::uint8_t> stiff(n, 2);
-  evaluate_specular_batch(*choice.light, options.specular, m, pts.view(), 0, n, {value.data(), stiff.data()});
+  evaluate_specular_batch(choice, options.specular, m, pts.view(), 0, n, {value.data(), stiff.data()});
   std::vector<double> ref(n);
   double max_ref = 0;
   for (long i = 0; i < n; ++i) {
@@ -223,7 +224,7 @@ TEST_CASE("punctual specular batch: stiff cases") {
     std::vector<double> value(pts.px.size());
     std::vector<std::uint8_t> stiff(pts.px.size());
     const BatchChoice choice = batch_kernel_for(prepare_light<double>(point_source(q, 2)), with_specular(SpecularFalloff::kAsDiffuse));
-    evaluate_specular_batch(*choice.light, SpecularOptions{}, 0.0, pts.view(), 0, long(value.size()), {value.data(), stiff.data()});
+    evaluate_specular_batch(choice, SpecularOptions{}, 0.0, pts.view(), 0, long(value.size()), {value.data(), stiff.data()});
     CHECK(value[0] == doctest::Approx(0.25).epsilon(1e-15));
     CHECK(value[4] == doctest::Approx(0.25).epsilon(1e-15));
     CHECK(value[8] == 0);
@@ -242,4 +243,82 @@ TEST_CASE("punctual specular batch: stiff cases") {
       }
     }
   }
+}
+
+namespace {
+
+std::vector<Vec3d> square_at(double half, double height, double cx = 0, double cy = 0) {  // facing down (-z)
+  return {{cx - half, cy - half, height}, {cx - half, cy + half, height}, {cx + half, cy + half, height},
+          {cx + half, cy - half, height}};
+}
+
+}  // namespace
+
+TEST_CASE("area specular batch: random convex polygons and shading points, m = 0, 1, 2, 40, 100, 1000") {
+  Rng rng(2121);
+  for (int light_case = 0; light_case < 12; ++light_case) {
+    const int corners = 3 + light_case % 6;
+    const double size = rng.log_uniform(1e-2, 1e1);
+    std::vector<Vec3d> polygon;
+    const Vec3d c{rng.uniform(-1, 1), rng.uniform(-1, 1), rng.uniform(0.5, 3)};
+    for (int k = 0; k < corners; ++k) {  // a regular polygon, clockwise seen from above: emits down
+      const double a = -2 * M_PI * k / corners + 0.3 * light_case;
+      polygon.push_back(c + Vec3d{size * std::cos(a), size * std::sin(a), 0});
+    }
+    LightSource source = vlit::test::area_source(polygon);
+    source.two_sided = light_case % 3 == 0;
+    SpecPoints pts;
+    for (int i = 0; i < 700; ++i) {
+      const Vec3d p{rng.uniform(-4, 4), rng.uniform(-4, 4), rng.uniform(-1, 0.3)};
+      const Vec3d eye{rng.uniform(-6, 6), rng.uniform(-6, 6), rng.uniform(1, 8)};
+      pts.add(p, rng.unit() + Vec3d{0, 0, 0.6}, eye);
+    }
+    for (double m : {0.0, 1.0, 2.0, 40.0, 100.0, 1000.0})
+      compare_specular("area " + std::to_string(corners) + "-gon, size " + std::to_string(size), source, pts, m);
+  }
+}
+
+TEST_CASE("area specular batch: stiff cases") {
+  const LightSource unit_square = vlit::test::area_source(square_at(0.5, 1));
+  SpecPoints pts;
+  // Rv through the light's centre, at its edge, just outside, far outside, behind the lobe.
+  for (double x : {0.0, 0.49, 0.5, 0.51, 2.0, -10.0}) pts.add_rv({0, 0, 0}, {0, 0, 1}, {x, 0, 1});
+  pts.add_rv({0, 0, 0}, {0, 0, 1}, {0.2, 0, -1});  // the lobe points away from the light
+  // The horizon crossing the light (tilted normals), grazing.
+  for (double tilt : {0.3, 1.0, 1.5, M_PI / 2 - 1e-7}) pts.add_rv({0.1, 0, 0}, {std::sin(tilt), 0, std::cos(tilt)}, {0.1, 0.05, 1});
+  // The lobe's half-space through the light (Rv nearly parallel to the light's plane).
+  pts.add_rv({0, 0, 0.99}, {0, 0, 1}, {1, 0, 1e-3});
+  for (double m : {0.0, 1.0, 40.0, 100.0, 1000.0}) {
+    compare_specular("square stiff", unit_square, pts, m);
+    compare_specular("tiny square", vlit::test::area_source(square_at(1e-6, 1)), pts, m);
+    compare_specular("huge square", vlit::test::area_source(square_at(1e3, 1)), pts, m);
+    compare_specular("far square", vlit::test::area_source(square_at(0.5, 1e5, 0, 0)), pts, m);
+  }
+}
+
+TEST_CASE("area specular batch: coverage of the shininess and the light; the plan does not choose it") {
+  const ShadeOptions options = with_specular(SpecularFalloff::kAsDiffuse);
+  const PreparedLight<double> square_light = prepare_light<double>(vlit::test::area_source(square_at(0.5, 1)));
+  BatchChoice quad = batch_kernel_for(square_light, options);
+  CHECK_FALSE(quad.specular_batch);
+  CHECK(quad.specular_reason == "batch area specular not faster than scalar");
+  REQUIRE(enable_area_specular_batch(quad, square_light));
+  REQUIRE(quad.specular_batch);
+  CHECK(specular_batch_covers(quad, 0));
+  CHECK(specular_batch_covers(quad, 30));
+  CHECK(specular_batch_covers(quad, kAreaSpecularBatchMaxShininess));
+  CHECK_FALSE(specular_batch_covers(quad, kAreaSpecularBatchMaxShininess + 1));
+  CHECK_FALSE(specular_batch_covers(quad, 2.1472));  // real m: the scalar path
+  ShadeOptions peak = options;
+  peak.specular.method = SpecularMethod::kPeak;
+  const BatchChoice quad_peak = batch_kernel_for(prepare_light<double>(vlit::test::area_source(square_at(0.5, 1))), peak);
+  CHECK_FALSE(quad_peak.specular_batch);
+  CHECK(quad_peak.specular_reason == "no batch kernel for this specular method");
+  std::vector<Vec3d> ten;
+  for (int k = 0; k < 10; ++k) ten.push_back({std::cos(-2 * M_PI * k / 10), std::sin(-2 * M_PI * k / 10), 1});
+  const PreparedLight<double> decagon_light = prepare_light<double>(vlit::test::area_source(ten));
+  BatchChoice decagon = batch_kernel_for(decagon_light, options);
+  CHECK(decagon.light);
+  CHECK_FALSE(enable_area_specular_batch(decagon, decagon_light));
+  CHECK_FALSE(decagon.specular_batch);
 }

@@ -22,6 +22,9 @@
 // linear lights, and baked with bake_file (load / plan / light / encode / write), with the batch
 // kernels and with the scalar double path, on 1 and 2 threads.
 //
+// Part 1b, specular: the exact specular of a quad (area_specular_batch.h, integer m) and of a point
+// light (punctual_specular_batch.h) against the scalar exact kernel, per m.
+//
 // --only NAME-PART: only the kernels whose name contains it (e.g. "quad"), for profiling.
 // --quick: small sizes and short timings (seconds), for the ctest entry that proves it runs.
 #include <omp.h>
@@ -232,6 +235,67 @@ void run_kernel(const KernelCase& kc, const PointSet& pts, const OpRates& ops, d
   std::fflush(stdout);
 }
 
+// Specular (exact, with the falloff) of one light at shininess m: the scalar double kernel (the
+// bake's path without a batch specular kernel: shade(), diffuse included, as the bake calls it) and
+// the batch specular kernel with its flagged lanes recomputed by shade(), as in the bake
+// (src/bake/batch_lighting.cpp). Eye above the floor, Rv per point.
+void run_specular(const char* name, const LightSource& source, double m, const PointSet& pts, double min_seconds,
+                  const std::string& only) {
+  if (std::string(name).find(only) == std::string::npos) return;
+  ShadeOptions options;  // exact specular, with the falloff
+  const PreparedLight<double> light = prepare_light<double>(source);
+  BatchChoice choice = batch_kernel_for(light, options);
+  enable_area_specular_batch(choice, light);  // area lights: the kernel the plan does not choose
+  if (!specular_batch_covers(choice, m)) {
+    std::printf("%s m=%g: no batch specular kernel (%s)\n", name, m, choice.specular_reason.c_str());
+    return;
+  }
+  const long n = pts.size();
+  const Vec3d eye{0.5, -1, 4};
+  std::vector<ShadingPoint<double>> sp(pts.sp_d);
+  std::vector<double> rx(n), ry(n), rz(n), out_d(n), out_b(n);
+  std::vector<std::uint8_t> stiff(n);
+  for (long v = 0; v < n; ++v) {
+    sp[v] = make_shading_point(sp[v].p, sp[v].n, eye, m);
+    sp[v].n = pts.sp_d[v].n;  // the float normal the batch sees
+    rx[v] = sp[v].rv.x; ry[v] = sp[v].rv.y; rz[v] = sp[v].rv.z;
+  }
+  const BatchPoints bp{pts.px.data(), pts.py.data(), pts.pz.data(), pts.nx.data(), pts.ny.data(), pts.nz.data(),
+                       rx.data(), ry.data(), rz.data()};
+  auto scalar = [&] {
+#pragma omp parallel for schedule(static)
+    for (long v = 0; v < n; ++v) out_d[v] = shade(light, sp[v], options).specular;
+  };
+  auto batch = [&] {
+    constexpr long kBlock = 1024;
+#pragma omp parallel for schedule(static)
+    for (long b = 0; b < (n + kBlock - 1) / kBlock; ++b) {
+      const long begin = b * kBlock, end = std::min(n, begin + kBlock);
+      evaluate_specular_batch(choice, options.specular, m, bp, begin, end, {out_b.data(), stiff.data()});
+      for (long v = begin; v < end; ++v)
+        if (stiff[v]) out_b[v] = shade(light, sp[v], options).specular;
+    }
+  };
+  double r[2][2];
+  for (int t = 1; t <= 2; ++t) {
+    omp_set_num_threads(t);
+    r[0][t - 1] = rate(scalar, double(n), min_seconds);
+    r[1][t - 1] = rate(batch, double(n), min_seconds);
+  }
+  batch();
+  scalar();
+  double max_ref = 0, worst = 0;
+  long flagged = 0;
+  for (long v = 0; v < n; ++v) max_ref = std::max(max_ref, out_d[v]);
+  for (long v = 0; v < n; ++v) {
+    flagged += stiff[v];
+    worst = std::max(worst, std::fabs(out_b[v] - out_d[v]) / std::max(std::fabs(out_d[v]), 1e-12 * max_ref));
+  }
+  std::printf("| %s | %g | %.2f | %.2f | %.2f | %.2f | %.1fx | %.1fx | %.2g | %.1f%% |\n", name, m, r[0][0] / 1e6, r[0][1] / 1e6,
+              r[1][0] / 1e6, r[1][1] / 1e6, r[1][0] / r[0][0], r[1][1] / r[0][1], worst, 100.0 * double(flagged) / double(n));
+  std::fflush(stdout);
+}
+
 // The benchmark's tube (falloff n) above the floor.
 LightSource linear(double falloff) { return test::linear_source({-1, -0.3, 1.5}, {1, 0.3, 1.6}, falloff); }
 
@@ -352,6 +416,13 @@ int main(int argc, char** argv) {
   run_kernel({"spot diffuse", spot, {100, 4, 2}}, pts, ops, min_seconds, only);
   run_kernel({"directional diffuse", sun, {12, 0, 0}}, pts, ops, min_seconds, only);
   std::printf("(M evaluations/s; T = threads; limit = per-lane operation counts x this machine's op rates measured above)\n\n");
+
+  std::printf("| specular kernel | m | scalar exact 1T | scalar exact 2T | batch 1T | batch 2T | batch/scalar 1T | batch/scalar 2T | batch max rel.err | flagged lanes |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
+  const LightSource quad = test::area_source({{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2.1}, {0.5, -0.5, 2.1}});
+  for (double m : {1.0, 2.0, 30.0, 100.0, 300.0, 1000.0}) run_specular("quad specular", quad, m, pts, min_seconds, only);
+  for (double m : {1.0, 30.0, 100.0, 2.1472}) run_specular("point specular", point, m, pts, min_seconds, only);
+  std::printf("(M evaluations/s; exact specular with the falloff; eye at (0.5, -1, 4); flagged lanes recomputed by the scalar kernel, in the batch's time)\n\n");
 
   if (asset.empty()) return 0;
   namespace fs = std::filesystem;

@@ -27,6 +27,11 @@ struct BatchPoints {
   const float* nx = nullptr;  // unit normal
   const float* ny = nullptr;
   const float* nz = nullptr;
+  // Unit reflected view direction Rv (conventions.h), for the specular kernels only; may be null
+  // for the diffuse ones.
+  const double* rx = nullptr;
+  const double* ry = nullptr;
+  const double* rz = nullptr;
 };
 
 // Per-lane outputs: the diffuse response for unit intensity (kd = 1, conventions.h) and a flag

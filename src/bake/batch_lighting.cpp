@@ -8,7 +8,8 @@ void BatchChunk::resize(long count) {
   count_ = count;
   const std::size_t n = static_cast<std::size_t>(count);
   if (px_.size() >= n) return;
-  for (auto* v : {&px_, &py_, &pz_}) v->resize(n);
+  for (auto* v : {&px_, &py_, &pz_, &rx_, &ry_, &rz_, &specular_}) v->resize(n);
+  specular_stiff_.resize(n);
   for (auto* v : {&nx_, &ny_, &nz_, &response_}) v->resize(n);
   stiff_.resize(n);
 }
@@ -18,17 +19,19 @@ void BatchChunk::fill(const ShadingPoint<double>* points, long begin, long end) 
     const ShadingPoint<double>& sp = points[v];
     px_[v] = sp.p.x; py_[v] = sp.p.y; pz_[v] = sp.p.z;
     nx_[v] = static_cast<float>(sp.n.x); ny_[v] = static_cast<float>(sp.n.y); nz_[v] = static_cast<float>(sp.n.z);
+    rx_[v] = sp.rv.x; ry_[v] = sp.rv.y; rz_[v] = sp.rv.z;
   }
 }
 
 void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,
-                             const ShadingPoint<double>* points, long count, Vec3d* diffuse) {
+                             const ShadingPoint<double>* points, long count, Vec3d* diffuse, Vec3d* specular) {
   if (lights.empty() || count <= 0) return;
   constexpr long kBlock = 1024;  // lanes per task (whole blocks: the split never changes a lane's code path)
   const long blocks = (count + kBlock - 1) / kBlock;
   chunk.resize(count);
   const BatchPoints pts = chunk.points();
   const BatchOutput out = chunk.scratch();
+  const BatchSpecularOutput spec_out = chunk.specular_scratch();
 #pragma omp parallel
   {
     // The same static schedule in every loop: a thread fills exactly the blocks it then lights.
@@ -36,14 +39,39 @@ void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& ligh
     for (long b = 0; b < blocks; ++b) chunk.fill(points, b * kBlock, std::min(count, (b + 1) * kBlock));
     for (int li : lights) {
       const PreparedLight<double>& light = plan.lights[li];
-      const BatchLight& batch = *plan.batch_of_light[li].light;
+      const BatchChoice& choice = plan.batch_of_light[li];
+      const BatchLight& batch = *choice.light;
 #pragma omp for schedule(static) nowait
       for (long b = 0; b < blocks; ++b) {
         const long begin = b * kBlock, end = std::min(count, begin + kBlock);
         evaluate_diffuse_batch(batch, pts, begin, end, out);
+        if (!specular) {
+          for (long v = begin; v < end; ++v) {
+            const double id = out.stiff[v] ? shade(light, points[v], plan.shade).diffuse : static_cast<double>(out.diffuse[v]);
+            diffuse[v] += light.radiance * id;
+          }
+          continue;
+        }
+        // One material per primitive: every point of the chunk has the same shininess.
+        if (specular_batch_covers(choice, points[begin].shininess)) {
+          evaluate_specular_batch(choice, plan.shade.specular, points[begin].shininess, pts, begin, end, spec_out);
+          for (long v = begin; v < end; ++v) {
+            if (out.stiff[v] | spec_out.stiff[v]) {
+              const Response<double> r = shade(light, points[v], plan.shade);
+              diffuse[v] += light.radiance * (out.stiff[v] ? r.diffuse : static_cast<double>(out.diffuse[v]));
+              specular[v] += light.radiance * (spec_out.stiff[v] ? r.specular : spec_out.specular[v]);
+            } else {
+              diffuse[v] += light.radiance * static_cast<double>(out.diffuse[v]);
+              specular[v] += light.radiance * spec_out.specular[v];
+            }
+          }
+          continue;
+        }
+        // The specular by the scalar double kernel (its diffuse is the one the batch lane replaces).
         for (long v = begin; v < end; ++v) {
-          const double id = out.stiff[v] ? shade(light, points[v], plan.shade).diffuse : static_cast<double>(out.diffuse[v]);
-          diffuse[v] += light.radiance * id;
+          const Response<double> r = shade(light, points[v], plan.shade);
+          diffuse[v] += light.radiance * (out.stiff[v] ? r.diffuse : static_cast<double>(out.diffuse[v]));
+          specular[v] += light.radiance * r.specular;
         }
       }
     }

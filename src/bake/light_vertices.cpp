@@ -112,7 +112,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
         for (long v = 0; v < count; ++v)
           points[v] = make_shading_point(prim.positions[begin + v], prim.normals[begin + v], eye, shininess);
       }
-      accumulate_batch_lights(plan, batch_lights, batch, points.data(), count, diffuse.data());
+      accumulate_batch_lights(plan, batch_lights, batch, points.data(), count, diffuse.data(),
+                              options.with_specular ? specular.data() : nullptr);
       for (std::size_t k = 0; k < lights_here.size(); ++k) {
         const PreparedLight<double>& light = plan.lights[lights_here[k]];
         Vec3d* spec_out = options.with_specular ? specular.data() : nullptr;

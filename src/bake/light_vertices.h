@@ -22,7 +22,7 @@ struct VertexLight {
 struct LightingRequest {
   ShadeOptions shade;
   std::optional<Vec3d> eye;  // specular is evaluated only with an eye
-  // Diffuse-only lights use the float SIMD batch kernels where the plan finds one (bake/batch_lighting.h);
+  // Lights' diffuse uses the float SIMD batch kernels where the plan finds one (bake/batch_lighting.h);
   // false keeps every light on the scalar double kernels.
   bool float_batch = true;
   bool shadows = false;      // --shadows: lights hidden by the scene's triangles (docs/shadows.md)

@@ -198,7 +198,7 @@ ScenePlan make_scene_plan(const Scene& scene, const PlanOptions& options) {
     }
     plan.source_of_light.push_back(li);
     if (options.float_batch) plan.batch_of_light.push_back(batch_kernel_for(plan.lights.back(), plan.shade));
-    else plan.batch_of_light.push_back({std::nullopt, "double precision requested"});
+    else plan.batch_of_light.push_back({std::nullopt, "double precision requested", false, "", std::nullopt});
     kept.push_back(&l);
   }
 
@@ -260,8 +260,16 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
         if (static_cast<std::size_t>(k) == i) vertices += scene.primitives[p].positions.size();
     const BatchChoice& batch = plan.batch_of_light[i];
     s << "plan: light " << l.name << ": " << diffuse_kernel(l, plan.shade) << ", " << vertices << " vertices, ";
-    if (batch.light) s << "float SIMD batch (" << batch_instruction_set() << ")\n";
-    else s << "scalar double (" << batch.reason << ")\n";
+    if (batch.light) s << "float SIMD batch (" << batch_instruction_set() << ")";
+    else s << "scalar double (" << batch.reason << ")";
+    // The specular's path, beside the diffuse's (bake/batch_lighting.h).
+    if (plan.shade.with_specular) {
+      s << "; specular " << specular_kernel(plan.shade) << ": ";
+      if (batch.specular_batch) s << "double SIMD batch (" << batch_instruction_set() << ")";
+      else if (batch.light) s << "scalar double (" << batch.specular_reason << ")";
+      else s << "scalar double";
+    }
+    s << "\n";
   }
   for (const std::string& line : unreached_light_warnings(plan, scene)) s << "plan: " << line << "\n";
   for (const std::string& line : plan.skipped.details) s << "plan: skipped " << line << "\n";

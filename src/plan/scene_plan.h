@@ -11,7 +11,7 @@
 // - a light that reaches no vertex at all is reported with why (unreached_light_warnings);
 // - specular work is planned only when an eye is given and asked for;
 // - every per-light constant is computed once (PreparedLight, and BatchLight for the lights
-//   whose diffuse-only work runs in a float SIMD batch kernel);
+//   whose diffuse runs in a float SIMD batch kernel);
 // - shadows (when asked for) only on the pairs where some triangle may lie between the primitive
 //   and the light: boxes prove the rest unoccluded, and a planar primitive cannot shadow itself.
 // describe() prints the plan for `--explain`.
@@ -31,7 +31,7 @@ namespace vlit {
 struct PlanOptions {
   ShadeOptions shade;
   bool has_eye = false;
-  bool float_batch = true;  // let diffuse-only lights use the float SIMD batch kernels
+  bool float_batch = true;  // let lights' diffuse use the float SIMD batch kernels
   bool shadows = false;  // --shadows on: lights with "shadows": true are hidden by the scene's triangles
 };
 

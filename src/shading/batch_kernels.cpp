@@ -1,6 +1,7 @@
 #include "shading/batch_kernels.h"
 
 #include <cmath>
+#include <string>
 
 namespace vlit {
 namespace {
@@ -22,10 +23,6 @@ bool is_convex(const PreparedAreaLight<double>& a) {
 
 BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOptions& options) {
   BatchChoice c;
-  if (options.with_specular) {
-    c.reason = "specular needed";
-    return c;
-  }
   std::visit(
       [&](const auto& k) {
         using K = std::decay_t<decltype(k)>;
@@ -96,6 +93,20 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
         }
       },
       light.kernel);
+  if (c.light && options.with_specular) {
+    const auto* area = std::get_if<PreparedAreaLight<double>>(&light.kernel);
+    if (std::holds_alternative<PunctualBatchLight>(*c.light)) {
+      c.specular_batch = true;
+    } else if (area && options.specular.method == SpecularMethod::kExact) {
+      // area_specular_batch.h exists and is tested, but measured no faster than the scalar path
+      // (docs/performance.md, "Batch specular"): the plan does not choose it.
+      c.specular_reason = "batch area specular not faster than scalar";
+    } else if (area) {
+      c.specular_reason = "no batch kernel for this specular method";
+    } else {
+      c.specular_reason = "no batch specular kernel for this model";
+    }
+  }
   return c;
 }
 
@@ -113,6 +124,29 @@ void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, 
   else if (const auto* l = std::get_if<LinearBatchLight>(&light)) linear_diffuse_batch(*l, points, begin, end, out);
   else if (const auto* a = std::get_if<AreaBatchLight>(&light)) area_diffuse_batch(*a, points, begin, end, out);
   else if (const auto* d = std::get_if<DiskBatchLight>(&light)) disk_diffuse_batch(*d, points, begin, end, out);
+}
+
+bool enable_area_specular_batch(BatchChoice& choice, const PreparedLight<double>& light) {
+  const auto* area = std::get_if<PreparedAreaLight<double>>(&light.kernel);
+  if (!choice.light || !area || area->count > kAreaSpecularBatchMaxVertices) return false;
+  choice.specular_batch = true;
+  choice.area_specular = *area;
+  return true;
+}
+
+bool specular_batch_covers(const BatchChoice& choice, double m) {
+  if (!choice.specular_batch || !choice.light) return false;
+  if (choice.area_specular) return m == std::floor(m) && m >= 0 && m <= kAreaSpecularBatchMaxShininess;
+  return m >= 0;
+}
+
+VLIT_BATCH_CLONES
+void evaluate_specular_batch(const BatchChoice& choice, const SpecularOptions& specular, double m, const BatchPoints& points,
+                             long begin, long end, const BatchSpecularOutput& out) {
+  const bool with_falloff = specular.falloff == SpecularFalloff::kAsDiffuse;
+  if (choice.area_specular) area_specular_batch(*choice.area_specular, int(m), points, begin, end, out);
+  else if (const auto* p = std::get_if<PunctualBatchLight>(&*choice.light))
+    punctual_specular_batch(*p, with_falloff, m, points, begin, end, out);
 }
 
 const char* batch_instruction_set() {

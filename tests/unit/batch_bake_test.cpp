@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "bake/light_vertices.h"
 #include "plan/scene_plan.h"
@@ -81,11 +82,13 @@ Scene test_scene() {
   return scene;
 }
 
-std::vector<VertexLight> light_with_threads(const Scene& scene, int threads, bool float_batch) {
+std::vector<VertexLight> light_with_threads(const Scene& scene, int threads, bool float_batch,
+                                           std::optional<Vec3d> eye = std::nullopt) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(threads);
   LightingRequest request;
   request.float_batch = float_batch;
+  request.eye = eye;
   auto out = light_scene_vertices(scene, request);
   omp_set_num_threads(saved);
   return out;
@@ -104,7 +107,14 @@ TEST_CASE("batch bake: the plan names the float batch kernels and why the others
   CHECK(text.find("light tube1: linear closed form (eq. 4), 17161 vertices, float SIMD batch") != std::string::npos);
   LightingRequest with_eye;
   with_eye.eye = Vec3d{0, 0, 5};
-  CHECK(describe(plan_lighting(scene, with_eye), scene).find("float SIMD batch") == std::string::npos);
+  const std::string spec = describe(plan_lighting(scene, with_eye), scene);
+  CHECK(spec.find("light quad: area contour integral (eq. 9), 17161 vertices, float SIMD batch") != std::string::npos);
+  CHECK(spec.find("; specular exact: scalar double (batch area specular not faster than scalar)\n", spec.find("light quad: ")) <
+        spec.find('\n', spec.find("light quad: ")));
+  CHECK(spec.find("; specular exact: scalar double (no batch specular kernel for this model)\n", spec.find("light tube1: ")) <
+        spec.find('\n', spec.find("light tube1: ")));
+  CHECK(spec.find("; specular exact: double SIMD batch", spec.find("light spot: ")) < spec.find('\n', spec.find("light spot: ")));
+  CHECK(spec.find("(non-convex polygon); specular exact: scalar double\n") != std::string::npos);
   LightingRequest scalar;
   scalar.float_batch = false;
   CHECK(describe(plan_lighting(scene, scalar), scene).find("scalar double (double precision requested)") != std::string::npos);
@@ -139,4 +149,69 @@ TEST_CASE("batch bake: float batch path within 1e-5 of the scalar double path") 
   MESSAGE("batch vs scalar bake: max relative difference " << worst);
   CHECK(worst <= 1e-5);
   CHECK(max_value > 0);
+}
+
+namespace {
+
+// The largest relative difference between two per-vertex colour arrays, each value compared with
+// max(|reference|, 1e-12 x the reference's largest value).
+double worst_relative(const std::vector<Vec3f>& got, const std::vector<Vec3f>& ref) {
+  double max_value = 0;
+  for (const Vec3f& c : ref) max_value = std::max({max_value, double(c.x), double(c.y), double(c.z)});
+  double worst = 0;
+  for (std::size_t v = 0; v < ref.size(); ++v)
+    for (int k = 0; k < 3; ++k)
+      worst = std::max(worst, std::fabs(double(got[v][k]) - ref[v][k]) / std::max(std::fabs(double(ref[v][k])), 1e-12 * max_value));
+  return worst;
+}
+
+}  // namespace
+
+TEST_CASE("batch bake with specular: diffuse and specular within 1e-5 of the scalar double path, thread-independent") {
+  // The float batch diffuse beside the specular must not change the specular, nor the diffuse
+  // beyond the float bar; the specular of every light with an eye (exact, the default).
+  const Scene scene = test_scene();
+  const Vec3d eye{0.5, -1, 4};
+  const auto batch = light_with_threads(scene, 2, true, eye)[0];
+  const auto scalar = light_with_threads(scene, 2, false, eye)[0];
+  REQUIRE(batch.specular.size() == scalar.specular.size());
+  REQUIRE_FALSE(scalar.specular.empty());
+  const double diffuse_worst = worst_relative(batch.diffuse, scalar.diffuse);
+  const double specular_worst = worst_relative(batch.specular, scalar.specular);
+  MESSAGE("batch vs scalar bake with specular: diffuse " << diffuse_worst << ", specular " << specular_worst);
+  CHECK(diffuse_worst <= 1e-5);
+  CHECK(specular_worst <= 1e-5);
+  double max_specular = 0;
+  for (const Vec3f& c : scalar.specular) max_specular = std::max(max_specular, double(c.x));
+  CHECK(max_specular > 0);
+  const auto one = light_with_threads(scene, 1, true, eye)[0];
+  CHECK(std::memcmp(one.specular.data(), batch.specular.data(), batch.specular.size() * sizeof(Vec3f)) == 0);
+  CHECK(std::memcmp(one.diffuse.data(), batch.diffuse.data(), batch.diffuse.size() * sizeof(Vec3f)) == 0);
+}
+
+TEST_CASE("batch bake with specular: lanes the batch specular flags (light on the horizon) get the scalar result") {
+  // A light 1e-9 above the plane of a flat patch and the eye opposite it: N.L^ ~ 1e-9 flags every
+  // lane of the point light's batch specular (punctual_specular_batch.h), while the specular itself
+  // is near its maximum (Rv points at the light). The bake must take those lanes from the scalar kernel.
+  Scene scene;
+  ScenePrimitive patch;
+  for (int i = 0; i < 40; ++i) {
+    patch.positions.push_back({-0.01 + 0.0005 * i, 0.001 * (i % 3), 0});
+    patch.normals.push_back({0, 0, 1});
+  }
+  scene.primitives.push_back(patch);
+  LightSource point;
+  point.name = "horizon point";
+  point.position = {1, 0, 1e-9};
+  scene.lights.push_back(point);
+  const Vec3d eye{-1, 0, 1e-9};
+  LightingRequest request;
+  request.eye = eye;
+  REQUIRE(plan_lighting(scene, request).batch_of_light[0].specular_batch);
+  const auto batch = light_with_threads(scene, 2, true, eye)[0];
+  const auto scalar = light_with_threads(scene, 2, false, eye)[0];
+  double max_specular = 0;
+  for (const Vec3f& c : scalar.specular) max_specular = std::max(max_specular, double(c.x));
+  CHECK(max_specular > 0.5);
+  CHECK(worst_relative(batch.specular, scalar.specular) <= 1e-5);
 }

@@ -56,7 +56,8 @@ Vec3d random_unit(std::mt19937_64& rng) {
 }
 
 // sides: 3, 4, 8, or 0 for a disk.
-std::vector<Case> make_cases(int sides, int count) {
+// real_m: the same cases with m = 10^(3u) not rounded (glTF roughness gives real m).
+std::vector<Case> make_cases(int sides, int count, bool real_m = false) {
   std::mt19937_64 rng(1000 + sides);
   std::uniform_real_distribution<double> u01(0, 1);
   std::vector<Case> out;
@@ -72,7 +73,8 @@ std::vector<Case> make_cases(int sides, int count) {
     const Vec3d e1 = normalize(cross(helper, normal)), e2 = cross(normal, e1);
     const Vec3d n = normalize(to_light + random_unit(rng) * 0.3);
     const Vec3d rv = normalize(to_light + random_unit(rng) * 0.3);
-    const double m = std::round(std::pow(10.0, 3 * u01(rng)));
+    const double m_real = std::pow(10.0, 3 * u01(rng));
+    const double m = real_m ? m_real : std::round(m_real);
     c.sp = {p, n, rv, m};
     if (sides == 0) {
       c.disk = {center, normal, size};
@@ -306,6 +308,36 @@ int main(int argc, char** argv) {
       const auto cf = engine(true), ad = engine(false);
       row(shape.name, "specular, closed form alone (integer m, forced)", max_error(cases, cf, true), time_ns(cases, cf), 0, note);
       row(shape.name, "specular, adaptive form alone tol 1e-9", max_error(cases, ad, true), time_ns(cases, ad), 0, "");
+
+      // Real m in [1, 1e3] (not rounded): `exact` (real closed form where its estimate holds,
+      // area_specular_closed_real.h), the real closed form alone (forced) and the adaptive form,
+      // speed-up against the adaptive form.
+      const std::vector<Case> real_cases = make_cases(shape.sides, count, true);
+      auto real_engine = [](bool closed_form) {
+        return [closed_form](const Case& c) {
+          const AreaView<double> view = make_area_view(c.prepared, c.sp.p);
+          if (!view.lit) return 0.0;
+          ClipPolygon<double> visible;
+          clip_to_horizon(c.prepared, view, c.sp.n, visible);
+          if (visible.count < 3) return 0.0;
+          return closed_form ? area_specular_closed_real(visible, view, c.sp.rv, c.sp.shininess).value
+                             : area_specular_exact(visible, view, c.sp.rv, c.sp.shininess, 1e-9);
+        };
+      };
+      int real_accepted = 0;
+      for (const Case& c : real_cases) {
+        const AreaView<double> view = make_area_view(c.prepared, c.sp.p);
+        ClipPolygon<double> visible;
+        if (view.lit) clip_to_horizon(c.prepared, view, c.sp.n, visible);
+        if (!view.lit || visible.count < 3 || area_specular_closed_real(visible, view, c.sp.rv, c.sp.shininess).accepted) ++real_accepted;
+      }
+      std::snprintf(note, sizeof note, "within its estimate on %d of %d cases", real_accepted, int(real_cases.size()));
+      const auto rex = shade(SpecularMethod::kExact, 1e-9, 0);
+      const auto rcf = real_engine(true), rad = real_engine(false);
+      const double rad_ns = time_ns(real_cases, rad);
+      row(shape.name, "specular, exact tol 1e-9 (real m)", max_error(real_cases, rex, true), time_ns(real_cases, rex), rad_ns, "vs adaptive alone");
+      row(shape.name, "specular, real closed form alone (real m, forced)", max_error(real_cases, rcf, true), time_ns(real_cases, rcf), rad_ns, note);
+      row(shape.name, "specular, adaptive form alone tol 1e-9 (real m)", max_error(real_cases, rad, true), rad_ns, 0, "");
     }
   }
   std::fprintf(stderr, "(checksum %g)\n", g_sink);

@@ -296,7 +296,7 @@ TEST_CASE("area specular batch: stiff cases") {
   }
 }
 
-TEST_CASE("area specular batch: coverage of the shininess and the light; the plan does not choose it") {
+TEST_CASE("area specular batch: coverage of the shininess and the light, and the plan does not choose it") {
   const ShadeOptions options = with_specular(SpecularFalloff::kAsDiffuse);
   const PreparedLight<double> square_light = prepare_light<double>(vlit::test::area_source(square_at(0.5, 1)));
   BatchChoice quad = batch_kernel_for(square_light, options);

@@ -31,6 +31,7 @@
 
 #include "accuracy_methods.h"
 #include "area_light.h"
+#include "area_specular_closed_real.h"
 #include "disk_light.h"
 
 namespace {
@@ -309,9 +310,9 @@ int main(int argc, char** argv) {
       row(shape.name, "specular, closed form alone (integer m, forced)", max_error(cases, cf, true), time_ns(cases, cf), 0, note);
       row(shape.name, "specular, adaptive form alone tol 1e-9", max_error(cases, ad, true), time_ns(cases, ad), 0, "");
 
-      // Real m in [1, 1e3] (not rounded): `exact` (real closed form where its estimate holds,
-      // area_specular_closed_real.h), the real closed form alone (forced) and the adaptive form,
-      // speed-up against the adaptive form.
+      // Real m in [1, 1e3] (not rounded): `exact` (the adaptive form for real m), the real-m closed
+      // form alone (area_specular_closed_real.h, forced; not dispatched) and the adaptive form
+      // alone; speed-up against the adaptive form alone.
       const std::vector<Case> real_cases = make_cases(shape.sides, count, true);
       auto real_engine = [](bool closed_form) {
         return [closed_form](const Case& c) {

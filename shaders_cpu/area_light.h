@@ -23,24 +23,23 @@
 #include "area_diffuse_contour.h"
 #include "area_polygon.h"
 #include "area_specular_closed.h"
-#include "area_specular_closed_real.h"
 #include "area_specular_exact.h"
 #include "area_specular_neighborhood.h"
 #include "area_specular_peak.h"
 
 namespace vlit {
 
-// The exact specular: the closed form where its error bound holds (area_specular_closed.h for
-// integer m, area_specular_closed_real.h for real m), the adaptive contour form otherwise
-// (area_specular_exact.h).
+// The exact specular: the closed form for integer m <= kAreaClosedDispatchMaxShininess where its
+// rounding bound holds (area_specular_closed.h), the adaptive contour form otherwise
+// (area_specular_exact.h): above that m the closed form's O(m) recurrence is slower than the
+// adaptive form. Real m takes the adaptive form: the real-m closed form
+// (area_specular_closed_real.h) is accurate but did not pay on a real bake (docs/area-lights.md
+// "Real m").
 template <class R>
 R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>& view, const Vec3<R>& rv, R m,
                                R tolerance) {
-  if (m == std::floor(m) && m >= R(0) && m <= R(kAreaClosedMaxShininess)) {
+  if (m == std::floor(m) && m >= R(0) && m <= R(kAreaClosedDispatchMaxShininess)) {
     const AreaSpecularClosed<R> c = area_specular_closed(visible, view, rv, int(m));
-    if (c.accepted) return c.value;
-  } else if (m > R(0) && m <= R(kAreaClosedMaxShininess)) {
-    const AreaSpecularClosed<R> c = area_specular_closed_real(visible, view, rv, m);
     if (c.accepted) return c.value;
   }
   return area_specular_exact(visible, view, rv, m, tolerance);

@@ -4,7 +4,7 @@
 //
 // What it computes: Is(exact) = ∫_Omega [N.w > 0] max(0, Rv.w)^m dw (unit intensity, ks = 1), real
 // m >= 0: the quantity of area_specular_closed.h (integer m) and area_specular_exact.h (adaptive).
-// glTF roughness gives non-integer m (src/scene/material.cpp), so real assets take this path.
+// glTF roughness gives non-integer m (src/scene/material.cpp).
 //
 // Sources: the edge form and the recurrence of area_specular_closed.h (Arvo 1995); the Kronrod
 // 7/15 rule of adaptive_kronrod.h (Kronrod 1965, QUADPACK's tables and error heuristic,
@@ -29,8 +29,10 @@
 // and the edge sum's rounding as in area_specular_closed.h (Σ of absolute values M). The result is
 // accepted when (m + 8) eps M / |Σ| + Q / |Σ| <= kAreaClosedBound (Q: Σ of |Rv.n_i| times the
 // quadrature estimates, F's counted J + 1 times: the recurrence carries an error of F(s) forward
-// with factors (k - 1) C^2 / k <= 1) and M / |Σ| <= 64; otherwise the caller takes the adaptive
-// form (area_specular_exact_dispatch in area_light.h).
+// with factors (k - 1) C^2 / k <= 1) and M / |Σ| <= 64; otherwise a caller takes the adaptive form.
+// Not dispatched by `--specular exact` (area_light.h): ~3 us per quad (about 120 nodes, each a
+// sincos, a log1p and an exp) is 2-3x faster than the adaptive form on the bench's cases but was
+// slower on the MetalRoughSpheres bake (docs/area-lights.md "Real m").
 // Measured: docs/area-lights.md "Real m"; tests/kernels/area/area_specular_closed_test.cpp
 // "real-m closed form*" (`./build/release/tests/area_light_tests -tc="real-m*" -s`).
 // Float: computes in double (AreaReal) like the other area kernels.
@@ -47,7 +49,7 @@
 namespace vlit {
 
 inline constexpr double kRealBase = 6;      // base exponent s in [kRealBase, kRealBase + 2)
-inline constexpr double kRealPanel = 0.8;   // rad: widest Kronrod panel along an edge
+inline constexpr double kRealPanel = 1.2;   // rad: widest Kronrod panel along an edge
 inline constexpr int kRealGradedPanels = 3;  // panels in w toward an end where c = 0 (2: estimates 1e-9)
 
 namespace area_real_detail {
@@ -57,6 +59,20 @@ template <class R>
 struct BaseIntegrals {
   R h = 0, f = 0, h_err = 0, f_err = 0;
 };
+
+// e^x - 1 to ~1 ulp: exp(x) - 1 where |x| > 1/2 (the difference is >= 0.39 |e^x|, no cancellation),
+// the Taylor series to x^15 / 15! below (remainder < 0.5^16 / 16! < 1e-18 relative). glibc's expm1
+// took 40 % of this kernel's time (perf), its exp a fraction of that.
+template <class R>
+R expm1_small(R x) {
+  if (std::fabs(x) > R(0.5)) return std::exp(x) - R(1);
+  // x (1 + x/2 (1 + x/3 (1 + ... (1 + x/15))))
+  constexpr R inv[16] = {R(0), R(1), R(1) / 2, R(1) / 3, R(1) / 4, R(1) / 5, R(1) / 6, R(1) / 7, R(1) / 8,
+                         R(1) / 9, R(1) / 10, R(1) / 11, R(1) / 12, R(1) / 13, R(1) / 14, R(1) / 15};
+  R p = R(1);
+  for (int k = 15; k >= 2; --k) p = R(1) + x * p * inv[k];
+  return x * p;
+}
 
 // QUADPACK's error heuristic for one panel (Piessens et al. 1983, qk15): the raw |K15 - G7| scaled
 // by how well the panel resolves the integrand's variation.
@@ -87,7 +103,7 @@ void kronrod_panel(R u_end, R sign, R len, R q, R w0, R w1, R big_c, R wn2, R s,
     const R one_minus_c2 = wn2 + c2 * su * su;
     const R one_minus_c = std::min(one_minus_c2 / (R(1) + c), R(1));
     // c^s - 1 = expm1(s log c); at c = 1 exactly (Rv on the edge) the ratio's limit is s / 2.
-    const R em1 = c > R(0) ? std::expm1(s * std::log1p(-one_minus_c)) : R(-1);
+    const R em1 = c > R(0) ? expm1_small(s * std::log1p(-one_minus_c)) : R(-1);
     const R j = w > R(0) ? jac : R(0);
     fh[i] = j * (one_minus_c2 > R(0) ? -em1 / one_minus_c2 : s / R(2));
     ff[i] = j * (R(1) + em1);

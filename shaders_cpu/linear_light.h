@@ -33,13 +33,14 @@
 
 namespace vlit {
 
-// The exact specular: the closed form for integer m where its rounding bound holds
-// (linear_specular_closed.h), the adaptive form otherwise and for real m (linear_specular_exact.h).
+// The exact specular: the closed form for integer m <= kLinearClosedDispatchMaxShininess where its
+// rounding bound holds (linear_specular_closed.h), the adaptive form otherwise and for real m
+// (linear_specular_exact.h): above that m the closed form's O(m) recurrence is the slower one.
 // n: the falloff exponent on the specular (0: none); the closed form takes n = 0 and n = 2.
 // Normalised (units of scale^-n).
 template <class A>
 A linear_specular_exact_dispatch(const LinearFrame<A>& fr, A m, A rel_tol, A n = A(0)) {
-  if (m == std::floor(m) && m >= A(0) && m <= A(kLinearClosedMaxShininess) && (n == A(0) || n == A(2))) {
+  if (m == std::floor(m) && m >= A(0) && m <= A(kLinearClosedDispatchMaxShininess) && (n == A(0) || n == A(2))) {
     const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m), int(n));
     if (c.accepted) return c.value;
   }

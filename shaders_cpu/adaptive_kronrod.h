@@ -1,13 +1,13 @@
 // Globally adaptive Gauss-Kronrod 7/15 quadrature over the curves of a contour: the one
 // integrator of the exact specular kernels (area_specular_exact.h integrates polygon edges with it,
-// disk_specular_exact.h rim arcs and chords).
+// disk_specular_exact.h rim arcs and chords, linear_specular_exact.h the segment as one curve).
 //
 // Computes Σ_c w_c ∫ f(c, t) dt over pieces [t0, t1] of each curve c's parameter t.
 //
 // Method: each piece is integrated by the 15-point Kronrod rule; the embedded 7-point Gauss rule
 // gives its error estimate |K15 - G7| (both times the curve's weight w_c). refine() bisects the
-// piece with the largest estimate until Σ error <= tolerance |Σ value|, the work list is full, or
-// the worst piece is too narrow to bisect in R. The initial pieces are the caller's: add_graded()
+// piece with the largest estimate until Σ error <= max(tolerance |Σ value|, floor), the work list
+// is full, or the worst piece is too narrow to bisect in R. The initial pieces are the caller's: add_graded()
 // cuts an interval around the integrand's known peaks so the adaptivity starts near them resolved.
 //
 // Contract:
@@ -93,11 +93,12 @@ class AdaptiveKronrod {
   }
 
   // Bisects the worst piece until the error target is met (see the header), then returns the sum.
-  // integrand(c, t) and weight(c) are the f and weight that add() was given for curve c.
+  // integrand(c, t) and weight(c) are the f and weight that add() was given for curve c; floor is
+  // an absolute error target for integrals that may be ~0 (0: relative only).
   template <class F, class W>
-  R refine(const F& integrand, const W& weight, R tolerance) {
+  R refine(const F& integrand, const W& weight, R tolerance, R floor = R(0)) {
     int splits = 0;
-    while (error_ > tolerance * std::abs(value_) && size_ + 2 <= kMaxPieces) {
+    while (error_ > std::max(tolerance * std::abs(value_), floor) && size_ + 2 <= kMaxPieces) {
       std::pop_heap(heap_.begin(), heap_.begin() + size_, less_error);
       const Piece p = heap_[--size_];
       value_ -= p.value; error_ -= p.error;

@@ -1,5 +1,5 @@
-// Adaptive composite Gauss-Legendre quadrature used by the linear-light kernels that have no
-// closed form (non-integer falloff, exact specular).
+// Adaptive composite Gauss-Legendre quadrature used by the linear-light diffuse kernel for
+// non-integer falloff (linear_diffuse_quadrature.h; the exact specular uses adaptive_kronrod.h).
 //
 // What it computes: the integral of a smooth scalar function over [e0, e_last], given initial
 // panel edges e0 < e1 < ... that the caller places at the integrand's features (foot of the

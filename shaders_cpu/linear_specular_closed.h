@@ -94,10 +94,10 @@ inline constexpr double kLinearClosedBound = 5e-12;
 inline constexpr double kLinearClosedMaxCancellation = 64;
 // Largest m the recurrence is run for (m/2 steps); above it the adaptive form is used.
 inline constexpr int kLinearClosedMaxShininess = 100000;
-// The dispatch (linear_light.h) uses this form up to here only: its O(m) recurrence costs more than
-// the adaptive form above (one segment, same process: m = 3e3 10.5 us vs 16.9 us, m = 1e4 44 us vs
-// 19 us; docs/linear-lights.md).
-inline constexpr int kLinearClosedDispatchMaxShininess = 4000;
+// The dispatch (linear_light.h) uses this form up to here only: above it, its O(m) recurrence (plus
+// the adaptive form on the cases it refuses) costs more than the adaptive form alone (bench
+// specular_exact_m_*: equal at m = 1e3, 3.3x at m = 3e3; docs/linear-lights.md).
+inline constexpr int kLinearClosedDispatchMaxShininess = 1000;
 
 template <class A>
 struct LinearSpecularClosed {

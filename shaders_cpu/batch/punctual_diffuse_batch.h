@@ -31,21 +31,17 @@ struct PunctualBatchLight {
 
 namespace batch_detail {
 
+// value / |L|^n times the spot's s^2 and the range window, in that order (the diffuse and the
+// specular lanes share it); L = (lx, ly, lz), d2 = |L|^2, dist = |L|, inv_dist = 1/|L| (0 at the
+// light); a zero |L|^n divides by 1 (the lane is flagged there).
 template <int kFalloff, bool kSpot>
-inline void punctual_lane(const PunctualBatchLight& L, double px, double py, double pz, float nxf, float nyf, float nzf,
-                          float& result, std::uint8_t& stiff_flag) {
-  const double nx = nxf, ny = nyf, nz = nzf;
-  const double lx = L.position[0] - px, ly = L.position[1] - py, lz = L.position[2] - pz;
-  const double d2 = lx * lx + ly * ly + lz * lz;
-  const double ndl = nx * lx + ny * ly + nz * lz;
-  const double dist = std::sqrt(d2);
-  const double inv_dist = d2 > 0. ? 1. / dist : 0.;
-  const double cos_theta = ndl * inv_dist;
+inline double punctual_attenuated(const PunctualBatchLight& L, double value, double lx, double ly, double lz,
+                                  double d2, double dist, double inv_dist) {
   double falloff = 1.;
   if constexpr (kFalloff == 1) falloff = dist;
   if constexpr (kFalloff == 2) falloff = d2;
   if constexpr (kFalloff == 3) falloff = d2 * dist;
-  double value = cos_theta / (falloff > 0. ? falloff : 1.);
+  value = value / (falloff > 0. ? falloff : 1.);
   if constexpr (kSpot) {
     const double c = -(lx * L.direction[0] + ly * L.direction[1] + lz * L.direction[2]) * inv_dist;
     double s = (c - L.cos_outer) * L.inv_cone_width;
@@ -55,7 +51,19 @@ inline void punctual_lane(const PunctualBatchLight& L, double px, double py, dou
   const double ratio2 = d2 * L.inv_range2;
   double window = 1. - ratio2 * ratio2;
   window = window < 0. ? 0. : (window > 1. ? 1. : window);
-  value *= window;
+  return value * window;
+}
+
+template <int kFalloff, bool kSpot>
+inline void punctual_lane(const PunctualBatchLight& L, double px, double py, double pz, float nxf, float nyf, float nzf,
+                          float& result, std::uint8_t& stiff_flag) {
+  const double nx = nxf, ny = nyf, nz = nzf;
+  const double lx = L.position[0] - px, ly = L.position[1] - py, lz = L.position[2] - pz;
+  const double d2 = lx * lx + ly * ly + lz * lz;
+  const double ndl = nx * lx + ny * ly + nz * lz;
+  const double dist = std::sqrt(d2);
+  const double inv_dist = d2 > 0. ? 1. / dist : 0.;
+  const double value = punctual_attenuated<kFalloff, kSpot>(L, ndl * inv_dist, lx, ly, lz, d2, dist, inv_dist);
   const bool stiff = !(d2 > 1e-60);
   constexpr double kFloatMax = 3.4028234663852886e38;
   result = (!stiff) & (ndl > 0.) & (value > 0.) ? float(value < kFloatMax ? value : kFloatMax) : 0.f;

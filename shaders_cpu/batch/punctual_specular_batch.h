@@ -62,31 +62,17 @@ inline void punctual_specular_lane(const PunctualBatchLight& L, double m, double
   const double inv_dist = d2 > 0. ? 1. / dist : 0.;
   const double ndl = nx * lx + ny * ly + nz * lz;
   const double c = (rx * lx + ry * ly + rz * lz) * inv_dist;
-  double value = phong_power_lane(c, m);
-  double falloff = 1.;
-  if constexpr (kFalloff == 1) falloff = dist;
-  if constexpr (kFalloff == 2) falloff = d2;
-  if constexpr (kFalloff == 3) falloff = d2 * dist;
-  value = value / (falloff > 0. ? falloff : 1.);
-  if constexpr (kSpot) {
-    const double cs = -(lx * L.direction[0] + ly * L.direction[1] + lz * L.direction[2]) * inv_dist;
-    double s = (cs - L.cos_outer) * L.inv_cone_width;
-    s = s < 0. ? 0. : (s > 1. ? 1. : s);
-    value *= s * s;
-  }
-  const double ratio2 = d2 * L.inv_range2;
-  double window = 1. - ratio2 * ratio2;
-  window = window < 0. ? 0. : (window > 1. ? 1. : window);
-  value *= window;
+  const double value = punctual_attenuated<kFalloff, kSpot>(L, phong_power_lane(c, m), lx, ly, lz, d2, dist, inv_dist);
   const bool stiff = (!(d2 > 1e-60)) | (std::fabs(ndl) <= kHorizonMargin * dist);
   result = (!stiff) & (ndl > 0.) ? value : 0.;
   stiff_flag = stiff ? 1 : 0;
 }
 
-template <int kFalloff, bool kSpot>
-inline void punctual_specular_loop(const PunctualBatchLight& light, double m, const BatchPoints& pts, long begin, long end,
-                                   const BatchSpecularOutput& out) {
-  const PunctualBatchLight L = light;  // a local copy: provably not aliased by the output arrays
+// for_each_lane (batch_points.h) for the specular: lane(px, py, pz, nx, ny, nz, rx, ry, rz,
+// specular, stiff) over restrict-qualified copies of the arrays, as one `omp simd` loop.
+template <class Lane>
+inline void for_each_specular_lane(const BatchPoints& pts, long begin, long end, const BatchSpecularOutput& out,
+                                   const Lane& lane) {
   const double* __restrict px = pts.px;
   const double* __restrict py = pts.py;
   const double* __restrict pz = pts.pz;
@@ -100,8 +86,18 @@ inline void punctual_specular_loop(const PunctualBatchLight& light, double m, co
   std::uint8_t* __restrict stiff = out.stiff;
 #pragma omp simd
   for (long v = begin; v < end; ++v)
-    punctual_specular_lane<kFalloff, kSpot>(L, m, px[v], py[v], pz[v], nx[v], ny[v], nz[v], rx[v], ry[v], rz[v],
-                                            specular[v], stiff[v]);
+    lane(px[v], py[v], pz[v], nx[v], ny[v], nz[v], rx[v], ry[v], rz[v], specular[v], stiff[v]);
+}
+
+template <int kFalloff, bool kSpot>
+inline void punctual_specular_loop(const PunctualBatchLight& light, double m, const BatchPoints& pts, long begin, long end,
+                                   const BatchSpecularOutput& out) {
+  const PunctualBatchLight L = light;  // a local copy: provably not aliased by the output arrays
+  for_each_specular_lane(pts, begin, end, out,
+                         [&L, m](double px, double py, double pz, float nx, float ny, float nz, double rx, double ry,
+                                 double rz, double& specular, std::uint8_t& stiff) {
+                           punctual_specular_lane<kFalloff, kSpot>(L, m, px, py, pz, nx, ny, nz, rx, ry, rz, specular, stiff);
+                         });
 }
 
 template <bool kSpot>
@@ -123,22 +119,16 @@ inline void punctual_specular_batch(const PunctualBatchLight& light, bool with_f
                                     long begin, long end, const BatchSpecularOutput& out) {
   if (light.kind == PunctualBatchLight::Kind::kDirectional) {
     const double tx = -light.direction[0], ty = -light.direction[1], tz = -light.direction[2];
-    const float* __restrict nx = pts.nx;
-    const float* __restrict ny = pts.ny;
-    const float* __restrict nz = pts.nz;
-    const double* __restrict rx = pts.rx;
-    const double* __restrict ry = pts.ry;
-    const double* __restrict rz = pts.rz;
-    double* __restrict specular = out.specular;
-    std::uint8_t* __restrict stiff = out.stiff;
-#pragma omp simd
-    for (long v = begin; v < end; ++v) {
-      const double ndl = double(nx[v]) * tx + double(ny[v]) * ty + double(nz[v]) * tz;
-      const double value = batch_detail::phong_power_lane(rx[v] * tx + ry[v] * ty + rz[v] * tz, m);
-      const bool flag = std::fabs(ndl) <= batch_detail::kHorizonMargin;
-      specular[v] = (!flag) & (ndl > 0.) ? value : 0.;
-      stiff[v] = flag ? 1 : 0;
-    }
+    batch_detail::for_each_specular_lane(
+        pts, begin, end, out,
+        [tx, ty, tz, m](double, double, double, float nx, float ny, float nz, double rx, double ry, double rz,
+                        double& specular, std::uint8_t& stiff) {
+          const double ndl = double(nx) * tx + double(ny) * ty + double(nz) * tz;
+          const double value = batch_detail::phong_power_lane(rx * tx + ry * ty + rz * tz, m);
+          const bool flag = std::fabs(ndl) <= batch_detail::kHorizonMargin;
+          specular = (!flag) & (ndl > 0.) ? value : 0.;
+          stiff = flag ? 1 : 0;
+        });
   } else if (light.kind == PunctualBatchLight::Kind::kSpot) {
     batch_detail::punctual_specular_by_falloff<true>(light, with_falloff, m, pts, begin, end, out);
   } else {

@@ -61,6 +61,35 @@ inline constexpr int kAreaClosedMaxShininess = 100000;
 // adaptive form above (bench/area_light_bench.cpp; at m = 1e4 ~10x more).
 inline constexpr int kAreaClosedDispatchMaxShininess = 1000;
 
+// One edge d_i -> d_j of the clipped polygon as the per-edge recurrences see it (this file and
+// area_specular_closed_real.h): with a = D + d_i, b = D + d_j and the edge's pole
+// nh = a x b / |a x b|, the weight wn = Rv.nh, the arc theta from a to b, and at both ends
+// c = Rv.x̂ and c' = Rv.(nh x x̂) (x̂ = â, b̂).
+template <class R>
+struct ArvoEdge {
+  R wn, theta, c0, c0p, c1, c1p;
+};
+
+// False for an edge that adds nothing: a x b = 0 (zero-length, or P on its line), or Rv in the
+// edge's plane (wn = 0).
+template <class R>
+bool arvo_edge(const AreaView<R>& view, const Vec3<R>& rv, const Vec3<R>& di, const Vec3<R>& dj, ArvoEdge<R>& e) {
+  const Vec3<R> cr = edge_cross(view.D, di, dj);  // a x b
+  const R len_cr = length(cr);
+  if (!(len_cr > R(0))) return false;
+  const Vec3<R> nh = cr / len_cr;
+  e.wn = dot(rv, nh);
+  if (e.wn == R(0)) return false;
+  const Vec3<R> a = view.D + di, b = view.D + dj;
+  const Vec3<R> ah = normalize(a), bh = normalize(b);
+  e.theta = std::atan2(len_cr, dot(a, b));
+  e.c0 = dot(rv, ah);
+  e.c0p = dot(rv, cross(nh, ah));
+  e.c1 = dot(rv, bh);
+  e.c1p = dot(rv, cross(nh, bh));
+  return true;
+}
+
 template <class R>
 struct AreaSpecularClosed {
   R value{0};
@@ -80,19 +109,9 @@ AreaSpecularClosed<R> area_specular_closed(const ClipPolygon<R>& horizon_clipped
   if (n < 3) return r;
   R sum = 0, mag = 0;
   for (int i = 0; i < n; ++i) {
-    const Vec3<R>& di = poly.d[i];
-    const Vec3<R>& dj = poly.d[(i + 1) % n];
-    const Vec3<R> cr = edge_cross(view.D, di, dj);  // a x b
-    const R len_cr = length(cr);
-    if (!(len_cr > R(0))) continue;
-    const Vec3<R> nh = cr / len_cr;
-    const R wn = dot(rv, nh);
-    if (wn == R(0)) continue;
-    const Vec3<R> a = view.D + di, b = view.D + dj;
-    const Vec3<R> ah = normalize(a), bh = normalize(b);
-    const R theta = std::atan2(len_cr, dot(a, b));
-    const R c0 = dot(rv, ah), c0p = dot(rv, cross(nh, ah));
-    const R c1 = dot(rv, bh), c1p = dot(rv, cross(nh, bh));
+    ArvoEdge<R> edge;
+    if (!arvo_edge(view, rv, poly.d[i], poly.d[(i + 1) % n], edge)) continue;
+    const auto [wn, theta, c0, c0p, c1, c1p] = edge;
     const R c2 = c0 * c0 + c0p * c0p;
     if (m == 0) continue;
     // F(k0) and the chain k0, k0 + 2, .., m - 1.

@@ -195,19 +195,9 @@ AreaSpecularClosed<R> area_specular_closed_real(const ClipPolygon<R>& horizon_cl
   const R s = mu - R(2 * J);
   R sum = 0, mag = 0, quad_err = 0;
   for (int i = 0; i < n; ++i) {
-    const Vec3<R>& di = poly.d[i];
-    const Vec3<R>& dj = poly.d[(i + 1) % n];
-    const Vec3<R> cr = edge_cross(view.D, di, dj);  // a x b
-    const R len_cr = length(cr);
-    if (!(len_cr > R(0))) continue;
-    const Vec3<R> nh = cr / len_cr;
-    const R wn = dot(rv, nh);
-    if (wn == R(0)) continue;
-    const Vec3<R> a = view.D + di, b = view.D + dj;
-    const Vec3<R> ah = normalize(a), bh = normalize(b);
-    const R theta = std::atan2(len_cr, dot(a, b));
-    const R c0 = dot(rv, ah), c0p = dot(rv, cross(nh, ah));
-    const R c1 = dot(rv, bh), c1p = dot(rv, cross(nh, bh));
+    ArvoEdge<R> edge;
+    if (!arvo_edge(view, rv, poly.d[i], poly.d[(i + 1) % n], edge)) continue;
+    const auto [wn, theta, c0, c0p, c1, c1p] = edge;
     const R cc2 = c0 * c0 + c0p * c0p;  // C^2
     const R big_c = std::sqrt(cc2);
     const R psi0 = std::atan2(c0p, c0);  // c = C cos(psi - psi0)

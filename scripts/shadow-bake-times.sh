@@ -12,24 +12,15 @@ pairs=(assets/paper/bowling.glb assets/paper/bowling-area.json "$@")
 (( ${#pairs[@]} % 2 == 0 )) || { echo "usage: $0 [ASSET LIGHTS ...]" >&2; exit 2; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-median_seconds() {  # median wall time of 3 runs of the command
-  local times=()
-  for _ in 1 2 3; do
-    local start end
-    start=$(date +%s.%N)
-    "$@" >/dev/null 2>&1
-    end=$(date +%s.%N)
-    times+=("$(awk -v s="$start" -v e="$end" 'BEGIN { print e - s }')")
-  done
-  printf '%s\n' "${times[@]}" | sort -g | sed -n 2p
-}
+# shellcheck source=scripts/median-wall-time.sh
+source scripts/median-wall-time.sh
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "| asset | lights | shadows off (s) | shadows on (s) | on / off |"
 echo "|---|---|---|---|---|"
 for ((i = 0; i < ${#pairs[@]}; i += 2)); do
   asset=${pairs[i]} lights=${pairs[i + 1]}
-  off=$(median_seconds "$vlit" bake "$asset" --lights "$lights" -o "$out/off.glb" --quiet)
-  on=$(median_seconds "$vlit" bake "$asset" --lights "$lights" -o "$out/on.glb" --shadows on --quiet)
+  off=$(median_seconds 3 "$vlit" bake "$asset" --lights "$lights" -o "$out/off.glb" --quiet)
+  on=$(median_seconds 3 "$vlit" bake "$asset" --lights "$lights" -o "$out/on.glb" --shadows on --quiet)
   awk -v a="$(basename "$asset")" -v l="$(basename "$lights")" -v off="$off" -v on="$on" \
     'BEGIN { printf "| %s | %s | %.3f | %.3f | %.1f |\n", a, l, off, on, on / off }'
 done

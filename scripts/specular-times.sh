@@ -12,22 +12,13 @@ vlit="${BUILD_DIR:-build/release}/vlit"
 (( $# % 3 == 0 )) || { echo "usage: $0 [ASSET LIGHTS EYE ...]" >&2; exit 2; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-median_seconds() {  # median wall time of 5 runs of the command
-  local times=()
-  for _ in 1 2 3 4 5; do
-    local start end
-    start=$(date +%s.%N)
-    "$@" >/dev/null 2>&1
-    end=$(date +%s.%N)
-    times+=("$(awk -v s="$start" -v e="$end" 'BEGIN { print e - s }')")
-  done
-  printf '%s\n' "${times[@]}" | sort -g | sed -n 3p
-}
+# shellcheck source=scripts/median-wall-time.sh
+source scripts/median-wall-time.sh
 row() {  # row NAME COMMAND... : the command with --specular none and exact appended
   local name=$1 none exact
   shift
-  none=$(median_seconds "$@" --specular none)
-  exact=$(median_seconds "$@" --specular exact)
+  none=$(median_seconds 5 "$@" --specular none)
+  exact=$(median_seconds 5 "$@" --specular exact)
   awk -v n="$name" -v a="$none" -v b="$exact" 'BEGIN { printf "| %s | %.3f | %.3f | %.2f |\n", n, a, b, b / a }'
 }
 echo "load before: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -254,12 +254,20 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
   }
   for (std::size_t i = 0; i < plan.lights.size(); ++i) {
     const LightSource& l = scene.lights[plan.source_of_light[i]];
-    std::size_t vertices = 0;
+    std::size_t vertices = 0, shadowed = 0;  // the light's vertices, and those on shadowed pairs
     for (std::size_t p = 0; p < scene.primitives.size(); ++p)
-      for (int k : plan.lights_of_primitive[p])
-        if (static_cast<std::size_t>(k) == i) vertices += scene.primitives[p].positions.size();
+      for (std::size_t k = 0; k < plan.lights_of_primitive[p].size(); ++k)
+        if (static_cast<std::size_t>(plan.lights_of_primitive[p][k]) == i) {
+          vertices += scene.primitives[p].positions.size();
+          if (plan.shadowed_of_primitive[p][k]) shadowed += scene.primitives[p].positions.size();
+        }
     const BatchChoice& batch = plan.batch_of_light[i];
     s << "plan: light " << l.name << ": " << diffuse_kernel(l, plan.shade) << ", " << vertices << " vertices, ";
+    // Shadowed pairs run the scalar shadowed path for diffuse and specular (bake/light_vertices.cpp).
+    if (vertices > 0 && shadowed == vertices) {
+      s << "scalar double (shadowed: the visible part of the light, eq. 10)\n";
+      continue;
+    }
     if (batch.light) s << "float SIMD batch (" << batch_instruction_set() << ")";
     else s << "scalar double (" << batch.reason << ")";
     // The specular's path, beside the diffuse's (bake/batch_lighting.h).
@@ -269,6 +277,7 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
       else if (batch.light) s << "scalar double (" << batch.specular_reason << ")";
       else s << "scalar double";
     }
+    if (shadowed > 0) s << "; " << shadowed << " of them shadowed: scalar double (eq. 10)";
     s << "\n";
   }
   for (const std::string& line : unreached_light_warnings(plan, scene)) s << "plan: " << line << "\n";

@@ -120,6 +120,32 @@ TEST_CASE("batch bake: the plan names the float batch kernels and why the others
   CHECK(describe(plan_lighting(scene, scalar), scene).find("scalar double (double precision requested)") != std::string::npos);
 }
 
+TEST_CASE("batch bake: the plan says which lights' pairs run the shadowed scalar path") {
+  Scene scene = test_scene();
+  scene.primitives[0].triangles = {0, 1, 131};  // the wavy sheet may shadow itself: every pair shadowed
+  LightingRequest shadows;
+  shadows.shadows = true;
+  const std::string all = describe(plan_lighting(scene, shadows), scene);
+  CHECK(all.find("light quad: area contour integral (eq. 9), 17161 vertices, scalar double (shadowed: the visible "
+                 "part of the light, eq. 10)\n") != std::string::npos);
+  CHECK(all.find("float SIMD batch") == std::string::npos);
+  // A flat tile facing down above the tubes, with nothing between them: its pairs stay unshadowed.
+  ScenePrimitive tile;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      tile.positions.push_back({-1.0 + 2 * i, -1.0 + 2 * j, 10});
+      tile.normals.push_back({0, 0, -1});
+    }
+  tile.triangles = {0, 1, 3, 0, 3, 2};
+  scene.primitives.push_back(tile);
+  const std::string some = describe(plan_lighting(scene, shadows), scene);
+  const std::size_t line = some.find("light tube2: ");
+  CHECK(some.find("light tube2: linear closed form (eq. 4), 17165 vertices, float SIMD batch") != std::string::npos);
+  CHECK(some.find("; 17161 of them shadowed: scalar double (eq. 10)\n", line) < some.find('\n', line) + 1);
+  const std::string off = describe(plan_lighting(scene, LightingRequest{}), scene);
+  CHECK(off.find("of them shadowed") == std::string::npos);
+}
+
 TEST_CASE("batch bake: bit-identical on 1 and 2 threads") {
   const Scene scene = test_scene();
   for (bool float_batch : {true, false}) {

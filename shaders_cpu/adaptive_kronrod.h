@@ -7,8 +7,9 @@
 // Method: each piece is integrated by the 15-point Kronrod rule; the embedded 7-point Gauss rule
 // gives its error estimate |K15 - G7| (both times the curve's weight w_c). refine() bisects the
 // piece with the largest estimate until Σ error <= max(tolerance |Σ value|, floor), the work list
-// is full, or the worst piece is too narrow to bisect in R. The initial pieces are the caller's: add_graded()
-// cuts an interval around the integrand's known peaks so the adaptivity starts near them resolved.
+// is full, or the worst piece is too narrow to bisect in R. The initial pieces are the caller's:
+// add_graded() cuts an interval around the integrand's known peaks so the adaptivity starts near
+// them resolved.
 //
 // Contract:
 //  - no heap: the work list is a fixed array of kMaxPieces pieces (48 bytes each in double), a

@@ -96,7 +96,8 @@ inline constexpr double kLinearClosedMaxCancellation = 64;
 inline constexpr int kLinearClosedMaxShininess = 100000;
 // The dispatch (linear_light.h) uses this form up to here only: above it, its O(m) recurrence (plus
 // the adaptive form on the cases it refuses) costs more than the adaptive form alone (bench
-// specular_exact_m_*: equal at m = 1e3, 3.3x at m = 3e3; docs/linear-lights.md).
+// specular_exact_m_*: even at m = 1e3; the recurrence alone 3.3x the adaptive form at m = 3e3;
+// docs/linear-lights.md).
 inline constexpr int kLinearClosedDispatchMaxShininess = 1000;
 
 template <class A>

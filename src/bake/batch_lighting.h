@@ -40,9 +40,10 @@ class BatchChunk {
 // diffuse[v] += radiance * Id(v), and specular[v] += radiance * Is(v) when `specular` is not null,
 // for every vertex of the chunk and every light of `lights`
 // (indices into plan.lights, each with plan.batch_of_light[i].light set), in that order, all
-// cores: a thread takes a block of vertices and lights it with every light, then takes the next
-// free block (dynamic schedule), so there is no barrier between lights and a slow block or a
-// busy core does not hold the others up.
+// cores: a thread takes a block of vertices and lights it with every light, so there is no
+// barrier between lights. Diffuse alone: 1024-lane blocks, static schedule. With specular:
+// 256-lane blocks handed to the next free thread (dynamic schedule), so that a block made slow by
+// the scalar specular, or a busy core, does not hold the others up.
 // The result for a vertex does not depend on the number of threads or on the blocks: a lane's
 // float result is the same in any vector width (shaders_cpu/batch/batch_points.h).
 void accumulate_batch_lights(const ScenePlan& plan, const std::vector<int>& lights, BatchChunk& chunk,

@@ -1,11 +1,13 @@
 // Shadow benchmark (docs/shadows.md): what soft shadows cost, and how the cost grows.
 //
 //   shadow_bench [--quick] [--only 1|2|3] [--scene bowling.glb --lights bowling-area.json]
+//                [--no-cuts] [--cluster-sizes 16,64]
 //
 // 1. The bowling scene with its area lights: the whole vertex loop with shadows off, on from
 //    silhouettes (the default) and on from triangle cuts (the previous method, the tests'
 //    reference), all cores, same process; ratio to off and the largest difference between the
-//    two shadowed results (relative to the largest value).
+//    two shadowed results (relative to the largest value). --cluster-sizes adds a row per size of
+//    the clusters of vertices (the default is ShadeOptions::shadow_cluster_size).
 // 2. Against the dense shadow-ray estimate at equal error: on vertices of that scene whose light
 //    is partly hidden, the stratified shadow-ray estimate of the diffuse (rays through our BVH)
 //    with N = 8 .. 8192 samples per light: RMS of (estimate - our exact value) / unshadowed value
@@ -112,7 +114,7 @@ double shadow_ray_diffuse(const LightSource& light, const ShadingPoint<double>& 
 }
 
 void bowling(const std::string& scene_path, const std::string& lights_path, bool quick, bool part1, bool part2,
-             bool with_cuts) {
+             bool with_cuts, const std::vector<int>& cluster_sizes) {
   LoadedScene loaded = load_scene(scene_path, lights_path, {SceneLimits{}, false});
   Scene& scene = loaded.scene;
   std::printf("## 1. %s with %s: whole vertex loop (%zu vertices, %zu lights, all cores)\n\n", scene_path.c_str(),
@@ -134,6 +136,22 @@ void bowling(const std::string& scene_path, const std::string& lights_path, bool
     on = light_scene_vertices(scene, request);
     t_on = process_seconds() - t;
     const double wall_on = wall_since();
+    // Other cluster sizes (the default's results, other times).
+    struct SizeRow { int size; double wall, cpu, difference; };
+    std::vector<SizeRow> size_rows;
+    for (int size : cluster_sizes) {
+      request.shade.shadow_cluster_size = size;
+      t = process_seconds();
+      wall = std::chrono::steady_clock::now();
+      const std::vector<VertexLight> sized = light_scene_vertices(scene, request);
+      SizeRow row{size, wall_since(), process_seconds() - t, 0};
+      for (std::size_t p = 0; p < on.size(); ++p)
+        for (std::size_t v = 0; v < on[p].diffuse.size(); ++v)
+          for (int c = 0; c < 3; ++c)
+            row.difference = std::max(row.difference, std::abs(double(on[p].diffuse[v][c]) - sized[p].diffuse[v][c]));
+      size_rows.push_back(row);
+    }
+    request.shade.shadow_cluster_size = ShadeOptions{}.shadow_cluster_size;
     request.shade.shadow_clusters = false;
     t = process_seconds();
     wall = std::chrono::steady_clock::now();
@@ -162,6 +180,10 @@ void bowling(const std::string& scene_path, const std::string& lights_path, bool
     std::printf("| off | %.3f | %.3f | %.2f | 1 | 1 |\n", wall_off, t_off, 1e6 * t_off / total);
     std::printf("| on, silhouettes, clusters of vertices (default) | %.3f | %.3f | %.2f | %.1f | %.1f |\n", wall_on, t_on,
                 1e6 * t_on / total, wall_on / wall_off, t_on / t_off);
+    for (const SizeRow& row : size_rows)
+      std::printf("| on, silhouettes, clusters of %d vertices (largest difference to the default: %.1e) | %.3f | %.3f | "
+                  "%.2f | %.1f | %.1f |\n",
+                  row.size, row.difference, row.wall, row.cpu, 1e6 * row.cpu / total, row.wall / wall_off, row.cpu / t_off);
     std::printf("| on, silhouettes, one search per vertex | %.3f | %.3f | %.2f | %.1f | %.1f |\n", wall_alone, t_alone,
                 1e6 * t_alone / total, wall_alone / wall_off, t_alone / t_off);
     if (with_cuts)
@@ -339,6 +361,7 @@ void scaling(bool quick) {
 int main(int argc, char** argv) {
   bool quick = false, with_cuts = true;
   int only = 0;
+  std::vector<int> cluster_sizes;
   std::string scene = "assets/paper/bowling.glb", lights = "assets/paper/bowling-area.json";
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -347,13 +370,27 @@ int main(int argc, char** argv) {
     else if (a == "--only" && i + 1 < argc) only = std::atoi(argv[++i]);
     else if (a == "--scene" && i + 1 < argc) scene = argv[++i];
     else if (a == "--lights" && i + 1 < argc) lights = argv[++i];
-    else {
-      std::fprintf(stderr, "usage: shadow_bench [--quick] [--only 1|2|3] [--scene FILE --lights LIGHTS.json] [--no-cuts]\n");
+    else if (a == "--cluster-sizes" && i + 1 < argc) {
+      for (std::size_t at = 0, comma = 0; at < std::strlen(argv[i + 1]); at = comma + 1) {
+        const std::string list = argv[i + 1];
+        comma = list.find(',', at);
+        if (comma == std::string::npos) comma = list.size();
+        const int size = std::atoi(list.substr(at, comma - at).c_str());
+        if (size < 1) {
+          std::fprintf(stderr, "shadow_bench: --cluster-sizes wants positive integers, as 16,64\n");
+          return 2;
+        }
+        cluster_sizes.push_back(size);
+      }
+      ++i;
+    } else {
+      std::fprintf(stderr, "usage: shadow_bench [--quick] [--only 1|2|3] [--scene FILE --lights LIGHTS.json] [--no-cuts] "
+                           "[--cluster-sizes N,N,...]\n");
       return 2;
     }
   }
   try {
-    if (only == 0 || only == 1 || only == 2) vlit::bench::bowling(scene, lights, quick, only != 2, only != 1, with_cuts);
+    if (only == 0 || only == 1 || only == 2) vlit::bench::bowling(scene, lights, quick, only != 2, only != 1, with_cuts, cluster_sizes);
     if (only == 0 || only == 3) vlit::bench::scaling(quick);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadow_bench: %s\n", e.what());

@@ -148,21 +148,35 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const Silh
   constexpr int kVariable = SilhouetteCluster::kVariable;
   if (cluster) {
     // In the cluster's leaves that P reaches (s.leaves), the edges whose weight over the cluster
-    // is not 0 and the triangles that may leave P's slab (silhouette_cluster.h).
+    // is not 0 and the triangles that may leave P's slab (silhouette_cluster.h); a triangle whose
+    // facing varies over the cluster is faced from P once, from its slot's plane.
+    constexpr std::int8_t kUnknown = 2;
+    s.slot_facing.assign(cluster->slots.size(), kUnknown);
+    auto facing = [&](std::uint32_t k) {
+      const SilhouetteCluster::Slot& slot = cluster->slots[k];
+      if (slot.facing != kVariable) return static_cast<int>(slot.facing);
+      if (s.slot_facing[k] == kUnknown) {
+        int ft = 0;
+        if (!(slot.may_touch && touches(triangles.corners[slot.triangle], f.p)) &&
+            !(slot.in_solid && culled_back_face(triangles, slot.triangle, f.p)))
+          ft = facing_from_plane(slot.normal, slot.normal_length, slot.corner, f.p);
+        s.slot_facing[k] = static_cast<std::int8_t>(ft);
+      }
+      return static_cast<int>(s.slot_facing[k]);
+    };
     for (std::uint32_t i : s.leaves) {
       for (std::uint32_t k = cluster->edges_begin[i]; k < cluster->edges_begin[i + 1]; ++k) {
-        const std::uint32_t e = cluster->weighed_edges[k];
-        if (s.edge_stamp[e] == s.stamp) continue;  // listed by both of its triangles' leaves
-        s.edge_stamp[e] = s.stamp;
-        const int fixed = cluster->edge_weight[e];
-        const int weight = fixed == kVariable ? edge_weight(occluders, e, f.p, s) : fixed;
-        if (weight != 0) add_edge(f, edges, e, weight, s);
+        int weight = cluster->listed_weight[k];
+        if (weight == kVariable) {
+          weight = 0;
+          for (std::uint32_t j = cluster->incidence_begin[k]; j < cluster->incidence_begin[k + 1]; ++j)
+            weight += facing(cluster->incident_slot[j]) * cluster->incident_direction[j];
+        }
+        if (weight != 0) add_edge(f, edges, cluster->weighed_edges[k], weight, s);
       }
       for (std::uint32_t k = cluster->chords_begin[i]; k < cluster->chords_begin[i + 1]; ++k) {
-        const std::uint32_t t = cluster->chord_triangles[k];
-        const int fixed = cluster->facing[t];
-        const int ft = fixed == kVariable ? facing_of(triangles, t, f.p, s) : fixed;
-        if (ft != 0) add_chords(f, triangles.corners[t], ft, s);
+        const int ft = facing(cluster->chord_slots[k]);
+        if (ft != 0) add_chords(f, triangles.corners[cluster->slots[cluster->chord_slots[k]].triangle], ft, s);
       }
     }
     return;

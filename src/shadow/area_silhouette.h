@@ -57,6 +57,7 @@ struct AreaSilhouetteScratch {
   std::vector<std::uint32_t> edge_stamp;  // per occluder edge: the query that last weighed it
   std::vector<std::int8_t> facing;        // per occluder triangle, valid when facing_stamp matches
   std::vector<std::uint32_t> facing_stamp;
+  std::vector<std::int8_t> slot_facing;   // per slot of a cluster (silhouette_cluster.h) from P, or 2: not yet
   std::uint32_t stamp = 0;
   std::vector<SilhouetteSegment> segments;
   std::vector<double> events;

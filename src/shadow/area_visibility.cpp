@@ -35,10 +35,11 @@ bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const 
   const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
   const double longest = std::max({length_squared(tri[1] - tri[0]), length_squared(tri[2] - tri[1]),
                                    length_squared(tri[0] - tri[2])});
-  if (!(length(n_tri) > kSliver * longest)) return false;  // a needle: no area, and no reliable plane
-  const double side = dot(n_tri, tri[0] - p);
-  if (!(std::abs(side) > kEdgeOn * length(n_tri) * length(tri[0] - p))) return false;  // edge-on or zero area
-  if (front) *front = side < 0;
+  const double n_length = length(n_tri);
+  if (!(n_length > kSliver * longest)) return false;  // a needle: no area, and no reliable plane
+  const int facing = facing_from_plane(n_tri, n_length, tri[0], p);
+  if (facing == 0) return false;  // edge-on or zero area
+  if (front) *front = facing > 0;
   return true;
 }
 

@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -131,5 +132,14 @@ Rect2 light_rectangle(const AreaView<double>& view, const ClipPolygon<double>& h
 inline constexpr double kEdgeOn = 1e-12;
 inline constexpr double kSliver = 1e-10;
 bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const Vec3d& p, bool* front);
+
+// is_occluder's test of the plane alone, for a triangle that is not a needle and not culled from
+// P: n = cross(c1 - c0, c2 - c0), n_length = length(n). +1: it faces P, -1: it faces away, 0: P
+// sees it edge-on.
+inline int facing_from_plane(const Vec3d& n, double n_length, const Vec3d& c0, const Vec3d& p) {
+  const double side = dot(n, c0 - p);
+  if (!(std::abs(side) > kEdgeOn * n_length * length(c0 - p))) return 0;
+  return side < 0 ? 1 : -1;
+}
 
 }  // namespace vlit

@@ -12,8 +12,6 @@ namespace vlit {
 namespace {
 
 constexpr long kBlock = 8;         // vertices per group without clusters
-// Vertices per cluster: 16 was the fastest of 4-128 on the paper's bowling lane (docs/shadows.md).
-constexpr int kClusterSize = 16;
 
 // Interleaves the low 21 bits of x, y and z (a Morton code).
 std::uint64_t spread_bits(std::uint64_t x) {
@@ -74,12 +72,13 @@ void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOp
           if (options.area_shadows == AreaShadowMethod::kSilhouette && options.shadow_clusters && !occluders.brute_force()) {
           const std::vector<std::uint32_t> order = morton_order(points, count);
           const PreparedAreaLight<double> polygon = shadowed_polygon(kernel);
-          const long clusters = (count + kClusterSize - 1) / kClusterSize;
+          const int cluster_size = std::max(1, options.shadow_cluster_size);
+          const long clusters = (count + cluster_size - 1) / cluster_size;
 #pragma omp parallel for schedule(dynamic, 1)
           for (long c = 0; c < clusters; ++c) {
             if (cancelled()) continue;
-            const long begin = c * kClusterSize;
-            const int n = static_cast<int>(std::min<long>(kClusterSize, count - begin));
+            const long begin = c * cluster_size;
+            const int n = static_cast<int>(std::min<long>(cluster_size, count - begin));
             thread_local SilhouetteCluster cluster;
             prepare_silhouette_cluster(polygon, points, order.data() + begin, n, occluders, cluster);
             for (int i = 0; i < n; ++i) {

@@ -164,16 +164,19 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
       cluster.node_stamp.size() != occluders.node_count()) {
     cluster.facing.assign(triangles.size(), 0);
     cluster.facing_stamp.assign(triangles.size(), 0);
+    cluster.slot_of.assign(triangles.size(), 0);
+    cluster.slot_stamp.assign(triangles.size(), 0);
     cluster.edge_stamp.assign(edges.size(), 0);
     cluster.edge_weight.assign(edges.size(), 0);
+    cluster.listed_stamp.assign(edges.size(), 0);
     cluster.leaf_position.assign(occluders.node_count(), 0);
     cluster.node_stamp.assign(occluders.node_count(), 0);
     cluster.stamp = 0;
   }
   if (++cluster.stamp == 0) {
-    std::fill(cluster.facing_stamp.begin(), cluster.facing_stamp.end(), 0);
-    std::fill(cluster.edge_stamp.begin(), cluster.edge_stamp.end(), 0);
-    std::fill(cluster.node_stamp.begin(), cluster.node_stamp.end(), 0);
+    for (auto* stamps : {&cluster.facing_stamp, &cluster.slot_stamp, &cluster.edge_stamp, &cluster.listed_stamp,
+                         &cluster.node_stamp})
+      std::fill(stamps->begin(), stamps->end(), 0);
     cluster.stamp = 1;
   }
   auto facing = [&](std::uint32_t t) {
@@ -209,8 +212,33 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
     }
     return cluster.edge_weight[e];
   };
+  // The slot of triangle t, made on first use.
+  cluster.slots.clear();
+  auto slot = [&](std::uint32_t t) {
+    if (cluster.slot_stamp[t] != cluster.stamp) {
+      cluster.slot_stamp[t] = cluster.stamp;
+      cluster.slot_of[t] = static_cast<std::uint32_t>(cluster.slots.size());
+      const auto& c = triangles.corners[t];
+      SilhouetteCluster::Slot s;
+      s.normal = cross(c[1] - c[0], c[2] - c[0]);
+      s.corner = c[0];
+      s.normal_length = length(s.normal);
+      s.triangle = t;
+      s.facing = facing(t);
+      s.may_touch = false;
+      for (const Vec3d& x : c) s.may_touch = s.may_touch || (x.x >= box.lo.x && x.x <= box.hi.x && x.y >= box.lo.y &&
+                                                             x.y <= box.hi.y && x.z >= box.lo.z && x.z <= box.hi.z);
+      s.in_solid = !triangles.solid.empty() && triangles.solid[t] >= 0;
+      cluster.slots.push_back(s);
+    }
+    return cluster.slot_of[t];
+  };
   cluster.weighed_edges.clear();
-  cluster.chord_triangles.clear();
+  cluster.listed_weight.clear();
+  cluster.incidence_begin.assign(1, 0);
+  cluster.incident_slot.clear();
+  cluster.incident_direction.clear();
+  cluster.chord_slots.clear();
   cluster.edges_begin.clear();
   cluster.chords_begin.clear();
   // A leaf with neither kind of item adds nothing for any vertex of B: it is dropped, so the
@@ -218,16 +246,28 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   std::size_t kept = 0;
   for (std::size_t i = 0; i < cluster.leaves.size(); ++i) {
     const std::uint32_t edges_before = static_cast<std::uint32_t>(cluster.weighed_edges.size());
-    const std::uint32_t chords_before = static_cast<std::uint32_t>(cluster.chord_triangles.size());
+    const std::uint32_t chords_before = static_cast<std::uint32_t>(cluster.chord_slots.size());
     for (std::uint32_t c = candidates_begin[i]; c < candidates_begin[i + 1]; ++c) {
       const std::uint32_t t = cluster.candidates[c];
-      if (facing(t) != 0 && !inside_every_slab(t)) cluster.chord_triangles.push_back(t);
+      if (facing(t) != 0 && !inside_every_slab(t)) cluster.chord_slots.push_back(slot(t));
       for (int j = 0; j < 3; ++j) {
         const std::uint32_t e = edges.edge_of[t][j];
-        if (weight_over_box(e) != 0) cluster.weighed_edges.push_back(e);
+        if (cluster.listed_stamp[e] == cluster.stamp) continue;  // listed in this or an earlier leaf
+        const std::int8_t weight = weight_over_box(e);
+        if (weight == 0) continue;
+        cluster.listed_stamp[e] = cluster.stamp;
+        cluster.weighed_edges.push_back(e);
+        cluster.listed_weight.push_back(weight);
+        if (weight == SilhouetteCluster::kVariable)
+          for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
+            const std::uint32_t code = edges.incident[k];
+            cluster.incident_slot.push_back(slot(code / 3));
+            cluster.incident_direction.push_back(static_cast<std::int8_t>(edges.direction_of[code / 3][code % 3]));
+          }
+        cluster.incidence_begin.push_back(static_cast<std::uint32_t>(cluster.incident_slot.size()));
       }
     }
-    if (cluster.weighed_edges.size() == edges_before && cluster.chord_triangles.size() == chords_before) continue;
+    if (cluster.weighed_edges.size() == edges_before && cluster.chord_slots.size() == chords_before) continue;
     cluster.edges_begin.push_back(edges_before);
     cluster.chords_begin.push_back(chords_before);
     cluster.leaf_position[cluster.leaves[i]] = static_cast<std::uint32_t>(kept);
@@ -236,7 +276,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   }
   cluster.leaves.resize(kept);
   cluster.edges_begin.push_back(static_cast<std::uint32_t>(cluster.weighed_edges.size()));
-  cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_triangles.size()));
+  cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_slots.size()));
 }
 
 }  // namespace vlit

@@ -14,7 +14,8 @@
 // - variable otherwise (its plane meets B, it has a corner in B, or B straddles its solid's box).
 // An edge whose incident triangles are all constant has the same weight from every point of B:
 // its weight is not computed again per vertex; an edge with a variable triangle is weighed per
-// vertex. A vertex of B keeps only the cluster's leaves that its own search would reach (a leaf
+// vertex, from the planes of its triangles stored with the cluster (the lists a vertex reads are
+// the cluster's own arrays, in the order it reads them, not lookups into the scene's tables). A vertex of B keeps only the cluster's leaves that its own search would reach (a leaf
 // outside its own volume, or facing it uniformly, is skipped: OccluderBvh::leaves_reached, or its
 // own search when the cluster has many leaves) and in each of them reads only the
 // edges whose weight over B is not 0 and the triangles that may leave its slab; the rest of the
@@ -52,12 +53,30 @@ struct SilhouetteCluster {
   static constexpr int kVariable = 100;
   std::vector<std::uint32_t> leaves;  // the BVH leaves the cluster's search reached that hold an item (below)
   std::vector<std::uint32_t> candidates, candidates_begin;  // leaves[i]'s: [begin[i], begin[i + 1])
+  // A triangle a vertex of B reads: its facing over B, and for kVariable what the vertex needs to
+  // find its own (facing_from_plane): its plane, and whether it may touch the vertex or be a
+  // culled back face of a closed surface.
+  struct Slot {
+    Vec3d normal, corner;  // cross(c1 - c0, c2 - c0) and c0
+    double normal_length;
+    std::uint32_t triangle;
+    std::int8_t facing;  // over B: +1, -1, 0 or kVariable
+    bool may_touch, in_solid;
+  };
+  std::vector<Slot> slots;
   // What a vertex of B reads instead of its candidates, per leaf (leaves[i]'s items are
-  // [edges_begin[i], edges_begin[i + 1]) and the same for chords): the edges of the leaf's
-  // candidates whose weight over B is not 0 (constant or kVariable; an edge shared by two leaves
-  // is listed by both), and the candidates that may leave some vertex's slab (facing not 0 and
-  // not wholly inside the slab of every vertex): their chords.
-  std::vector<std::uint32_t> weighed_edges, chord_triangles;
+  // [edges_begin[i], edges_begin[i + 1]) and the same for chords):
+  // - the edges of the leaf's candidates whose weight over B is not 0, each listed once, in the
+  //   first leaf that holds one of its triangles: from a vertex whose search does not reach that
+  //   leaf the edge adds nothing (it lies outside the vertex's volume, or its triangles face the
+  //   vertex the same way); with its weight over B (listed_weight), and for kVariable the slots
+  //   and directions of its triangles ([incidence_begin[k], incidence_begin[k + 1]));
+  // - the slots of the candidates that may leave some vertex's slab (facing not 0 and not wholly
+  //   inside the slab of every vertex): their chords.
+  std::vector<std::uint32_t> weighed_edges, chord_slots;
+  std::vector<std::int8_t> listed_weight;
+  std::vector<std::uint32_t> incidence_begin, incident_slot;
+  std::vector<std::int8_t> incident_direction;
   std::vector<std::uint32_t> edges_begin, chords_begin;
   // Per BVH node, its position in `leaves` where node_stamp is the cluster's stamp: a vertex of a
   // cluster with more than kFlatLeaves leaves finds the ones it reaches by its own search, which
@@ -66,6 +85,7 @@ struct SilhouetteCluster {
   std::vector<std::uint32_t> leaf_position, node_stamp;
   std::vector<std::int8_t> facing, edge_weight;
   std::vector<std::uint32_t> facing_stamp, edge_stamp;
+  std::vector<std::uint32_t> slot_of, slot_stamp, listed_stamp;  // per triangle, per edge
   std::uint32_t stamp = 0;
 };
 

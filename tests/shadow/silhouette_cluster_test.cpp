@@ -274,13 +274,11 @@ TEST_CASE("clusters = one search per vertex: random soups over a dense floor, a 
   CHECK(all[1].cuts <= 1e-9);
 }
 
-TEST_CASE("clusters = one search per vertex: a grid of spheres lighting each other's vertices under small panels") {
-  // As the Khronos MetalRoughSpheres sample under panels: spheres 0.7 apart from their
-  // neighbours' surfaces, every vertex a receiver, panels of the spheres' spacing not far above.
-  // A cluster's search leaves out triangles that a vertex's own (looser, corner-by-plane) test
-  // keeps: those must be weighed per vertex, not from the cluster's stale classification.
-  std::vector<Tri> tris;
-  std::vector<ShadingPoint<double>> points;
+namespace {
+
+// As the Khronos MetalRoughSpheres sample: a 4 x 4 grid of spheres 0.7 apart from their
+// neighbours' surfaces, every vertex a receiver.
+void sphere_grid(std::vector<Tri>& tris, std::vector<ShadingPoint<double>>& points) {
   const std::vector<Tri> unit = icosphere({0, 0, 0}, 0.35, 2);
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) {
@@ -290,6 +288,17 @@ TEST_CASE("clusters = one search per vertex: a grid of spheres lighting each oth
         points.push_back(make_shading_point(t[0] + center, normalize(t[0]), Vec3d{1.5, 1.5, 6}, 10.0));
       }
     }
+}
+
+}  // namespace
+
+TEST_CASE("clusters = one search per vertex: a grid of spheres lighting each other's vertices under small panels") {
+  // Panels of the spheres' spacing not far above. A cluster's search leaves out triangles that a
+  // vertex's own (looser, corner-by-plane) test keeps: those must be weighed per vertex, not from
+  // the cluster's stale classification.
+  std::vector<Tri> tris;
+  std::vector<ShadingPoint<double>> points;
+  sphere_grid(tris, points);
   const OccluderBvh bvh = make_bvh(tris);
   ClusterAgreement all;
   for (const Vec3d& c : {Vec3d{-0.2, -0.2, 1.2}, Vec3d{3.2, 0.3, 0.9}, Vec3d{1.5, 3.2, 0.8}, Vec3d{1.5, 1.5, 3}}) {
@@ -305,6 +314,42 @@ TEST_CASE("clusters = one search per vertex: a grid of spheres lighting each oth
   CHECK(all.shadowed > all.cases / 8);
   CHECK(all.diffuse <= 1e-12);
   CHECK(all.clustered >= 0.5);
+}
+
+TEST_CASE("clusters: their size does not change the result") {
+  // A vertex reads an edge only through the first of the cluster's leaves that lists it, and the
+  // facings of the cluster's variable triangles from their stored planes; clusters of 1 to 200
+  // vertices (one vertex, and clusters that the width limit sends to the per-vertex search) must
+  // light every vertex as the default size does, shadowed or not.
+  std::vector<Tri> tris;
+  std::vector<ShadingPoint<double>> points;
+  sphere_grid(tris, points);
+  const OccluderBvh bvh = make_bvh(tris);
+  const long n = static_cast<long>(points.size());
+  ShadeOptions options = options_with(SpecularMethod::kExact);
+  for (const Vec3d& c : {Vec3d{-0.2, -0.2, 1.2}, Vec3d{3.2, 0.3, 0.9}}) {
+    const PreparedLight<double> panel = prepare_light<double>(
+        area_source({c + Vec3d{-1, -1, 0}, c + Vec3d{-1, 1, 0}, c + Vec3d{1, 1, 0}, c + Vec3d{1, -1, 0}}));
+    options.shadow_cluster_size = ShadeOptions{}.shadow_cluster_size;
+    std::vector<Vec3d> diffuse(n), specular(n);
+    accumulate_light_shadowed(panel, options, points.data(), n, diffuse.data(), specular.data(), bvh);
+    int shadowed = 0;
+    for (long i = 0; i < n; ++i)
+      shadowed += diffuse[i].x < shade(panel, points[i], options).diffuse * panel.radiance.x * (1 - 1e-9);
+    MESSAGE("panel at " << c.x << ", " << c.y << ", " << c.z << ": " << shadowed << " of " << n << " vertices shadowed");
+    CHECK(shadowed > n / 8);
+    for (int size : {1, 3, 16, 200}) {
+      CAPTURE(size);
+      options.shadow_cluster_size = size;
+      std::vector<Vec3d> d(n), s(n);
+      accumulate_light_shadowed(panel, options, points.data(), n, d.data(), s.data(), bvh);
+      double largest = 0;
+      for (long i = 0; i < n; ++i)
+        largest = std::max({largest, std::abs(d[i].x - diffuse[i].x) / std::max(diffuse[i].x, 1e-300),
+                            std::abs(s[i].x - specular[i].x) / std::max(specular[i].x, 1e-300)});
+      CHECK(largest <= 1e-13);
+    }
+  }
 }
 
 TEST_CASE("clusters = one search per vertex: a closed box wider than the light's pyramid hides a floor") {

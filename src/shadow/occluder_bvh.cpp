@@ -87,25 +87,47 @@ bool box_inside_unit(const Aabb& box, const HalfSpace& h) {
   return r.distance > r.margin;
 }
 
+// A half-space with a unit normal, and the part of the ball tests' margin that its origin brings
+// (OccluderBvh::outside).
+struct UnitPlane {
+  HalfSpace h;
+  double origin_margin = 0;
+};
+UnitPlane unit_plane(const HalfSpace& plane) {
+  const double len = length(plane.normal);
+  const Vec3d& o = plane.origin;
+  return {{len > 0 ? plane.normal / len : Vec3d{}, o}, 2e-9 * std::max({std::abs(o.x), std::abs(o.y), std::abs(o.z)})};
+}
+
+// The planes of a convex volume with unit normals; a volume with more than 16 is culled by its
+// first 16.
+struct UnitPlanes {
+  UnitPlane plane[16];
+  int count = 0;
+  explicit UnitPlanes(const std::vector<HalfSpace>& planes) {
+    for (const HalfSpace& h : planes)
+      if (count < 16) plane[count++] = unit_plane(h);
+  }
+};
+
 // The `inside` planes of the silhouette searches with unit normals; more than 4 are never held
 // (no subtree is skipped as uniform: conservative).
 struct UnitHalfSpaces {
-  HalfSpace h[4];
+  UnitPlane h[4];
   int count = 0;
   bool too_many = false;
   UnitHalfSpaces(const HalfSpace* planes, int n) : too_many(n > 4) {
-    for (int k = 0; k < n && k < 4; ++k) {
-      const double len = length(planes[k].normal);
-      h[count++] = {len > 0 ? planes[k].normal / len : Vec3d{}, planes[k].origin};
-    }
-  }
-  bool hold(const Aabb& box) const {
-    if (too_many) return false;
-    for (int k = 0; k < count; ++k)
-      if (!box_inside_unit(box, h[k])) return false;
-    return true;
+    for (int k = 0; k < n && k < 4; ++k) h[count++] = unit_plane(planes[k]);
   }
 };
+
+// The node lies inside every half-space of `slab`.
+bool holds(const OccluderBvh& bvh, const UnitHalfSpaces& slab, std::uint32_t node) {
+  if (slab.too_many) return false;
+  for (int k = 0; k < slab.count; ++k)
+    if (!bvh.inside(node, slab.h[k].h, slab.h[k].origin_margin)) return false;
+  return true;
+}
 
 }  // namespace
 
@@ -248,6 +270,37 @@ void OccluderBvh::build_cones() {
     }
     finish(cones_[i]);
   }
+  // The ball test's margin (outside()) must be at least the box test's, 2e-9 (max |w| + max
+  // extent) with w = corner - origin: |w| <= |centre| + |origin| + radius and the extent is at most
+  // 2 radius (max-norms); 1e-12 |centre| more covers the rounding of the centre itself.
+  balls_.resize(nodes_.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    const Aabb& box = nodes_[i].box;
+    Ball& ball = balls_[i];
+    ball.center = box.center();
+    ball.radius = 0.5 * length(box.hi - box.lo);
+    const double c = std::max({std::abs(ball.center.x), std::abs(ball.center.y), std::abs(ball.center.z)});
+    ball.margin = 2e-9 * (c + 3 * ball.radius) + 1e-12 * c;
+  }
+}
+
+// Where a node lies against a half-space (unit normal): decided by the ball that holds its box (one
+// dot product), and by the box only when the ball straddles the plane. The ball's margin is at
+// least the box test's (build_cones), so the ball never decides what the box test would not.
+bool OccluderBvh::outside(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
+  const Ball& ball = balls_[node];
+  const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + origin_margin;
+  if (d + ball.radius < -margin) return true;
+  if (d - ball.radius > margin) return false;
+  return box_outside_unit(nodes_[node].box, h);
+}
+
+bool OccluderBvh::inside(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
+  const Ball& ball = balls_[node];
+  const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + origin_margin;
+  if (d - ball.radius > margin) return true;
+  if (d + ball.radius < -margin) return false;
+  return box_inside_unit(nodes_[node].box, h);
 }
 
 // Every triangle of the subtree and every edge neighbour of them faces p the same way (strictly,
@@ -259,10 +312,9 @@ void OccluderBvh::build_cones() {
 bool OccluderBvh::faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const {
   const NormalCone& cone = cones_[node];
   if (cone.open || !(cone.half_angle < M_PI / 2)) return false;
-  const Aabb& box = nodes_[node].box;
-  const Vec3d to_p = p - box.center();
+  const Vec3d to_p = p - balls_[node].center;
   const double distance = length(to_p);
-  const double radius = 0.5 * length(box.hi - box.lo) + p_radius;
+  const double radius = balls_[node].radius + p_radius;
   if (!(distance > radius * (1 + 1e-6))) return false;
   // Angles alpha (axis to p), theta (the cone), phi (the box seen from p) combined through their
   // cosines and sines: all face p when alpha + theta + phi < pi/2 - margin, all face away when
@@ -364,7 +416,7 @@ void OccluderBvh::silhouette_candidates(const ConvexVolume& volume, const HalfSp
   }
   // A subtree that faces p uniformly and that no plane of `inside` cuts carries no silhouette.
   const UnitHalfSpaces slab(inside, inside_count);
-  auto uniform = [&](std::uint32_t node) { return slab.hold(nodes_[node].box) && faces_uniformly(node, p, p_radius); };
+  auto uniform = [&](std::uint32_t node) { return holds(*this, slab, node) && faces_uniformly(node, p, p_radius); };
   visit_volume(volume, uniform, [&](std::uint32_t node) {
     for (std::uint32_t i = nodes_[node].first; i < nodes_[node].first + nodes_[node].count; ++i)
       if (near_volume(order_[i], volume)) out.push_back(order_[i]);
@@ -377,7 +429,7 @@ void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace*
   leaves.clear();
   if (brute_force_ || nodes_.empty()) return;
   const UnitHalfSpaces slab(inside, inside_count);
-  auto uniform = [&](std::uint32_t node) { return slab.hold(nodes_[node].box) && faces_uniformly(node, p, p_radius); };
+  auto uniform = [&](std::uint32_t node) { return holds(*this, slab, node) && faces_uniformly(node, p, p_radius); };
   visit_volume(volume, uniform, [&](std::uint32_t node) { leaves.push_back(node); });
   std::sort(leaves.begin(), leaves.end(), [&](std::uint32_t a, std::uint32_t b) { return nodes_[a].first < nodes_[b].first; });
 }
@@ -388,19 +440,15 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
   out.clear();
   const UnitHalfSpaces slab(inside, inside_count);
   const Aabb query = padded(volume.box);
-  HalfSpace planes[16];  // unit normals, as visit_volume
-  const int plane_count = std::min<int>(16, static_cast<int>(volume.planes.size()));
-  for (int k = 0; k < plane_count; ++k) {
-    const double len = length(volume.planes[k].normal);
-    planes[k] = {len > 0 ? volume.planes[k].normal / len : Vec3d{}, volume.planes[k].origin};
-  }
+  const UnitPlanes planes(volume.planes);  // as visit_volume
   for (std::uint32_t i = 0; i < leaves.size(); ++i) {
-    const Aabb& box = nodes_[leaves[i]].box;
-    if (!box.overlaps(query)) continue;
-    bool outside = false;
-    for (int k = 0; k < plane_count && !outside; ++k) outside = box_outside_unit(box, planes[k]);
-    if (outside) continue;
-    if (slab.hold(box) && faces_uniformly(leaves[i], p, 0)) continue;
+    const std::uint32_t leaf = leaves[i];
+    if (!nodes_[leaf].box.overlaps(query)) continue;
+    bool out_of_volume = false;
+    for (int k = 0; k < planes.count && !out_of_volume; ++k)
+      out_of_volume = outside(leaf, planes.plane[k].h, planes.plane[k].origin_margin);
+    if (out_of_volume) continue;
+    if (holds(*this, slab, leaf) && faces_uniformly(leaf, p, 0)) continue;
     out.push_back(i);
   }
 }
@@ -408,19 +456,13 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
 template <class Prune, class Leaf>
 void OccluderBvh::visit_volume(const ConvexVolume& volume, const Prune& prune, const Leaf& leaf) const {
   const Aabb query = padded(volume.box);
-  HalfSpace planes[16];  // unit normals; a volume with more planes is culled by its first 16
-  const int plane_count = std::min<int>(16, static_cast<int>(volume.planes.size()));
-  for (int k = 0; k < plane_count; ++k) {
-    const double len = length(volume.planes[k].normal);
-    planes[k] = {len > 0 ? volume.planes[k].normal / len : Vec3d{}, volume.planes[k].origin};
-  }
+  const UnitPlanes planes(volume.planes);
   descend(
       nodes_,
       [&](std::uint32_t self) {
-        const Aabb& box = nodes_[self].box;
-        if (!box.overlaps(query)) return false;
-        for (int k = 0; k < plane_count; ++k)
-          if (box_outside_unit(box, planes[k])) return false;
+        if (!nodes_[self].box.overlaps(query)) return false;
+        for (int k = 0; k < planes.count; ++k)
+          if (outside(self, planes.plane[k].h, planes.plane[k].origin_margin)) return false;
         return !prune(self);
       },
       [&](std::uint32_t self) {

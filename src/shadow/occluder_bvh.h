@@ -79,6 +79,11 @@ class OccluderBvh {
   // The triangle is not wholly outside one of the volume's planes, and its box meets the volume's.
   bool near_volume(std::uint32_t triangle, const ConvexVolume& volume) const;
 
+  // The node's box lies wholly outside (inside) the half-space h, whose normal has unit length,
+  // beyond a margin far above rounding; origin_margin is 2e-9 times the max-norm of h's origin.
+  bool outside(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
+  bool inside(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
+
   // Every triangle whose (padded) box the segment a -> b meets, unsorted (the caller tests them).
   void triangles_near_segment(const Vec3d& a, const Vec3d& b, std::vector<std::uint32_t>& out) const;
 
@@ -97,6 +102,12 @@ class OccluderBvh {
     bool open = false;   // holds a triangle with an open edge
     int solid = -1;      // the closed solid all its triangles belong to, -1 for none, -2 if mixed
   };
+  // A ball that holds a node's box (its centre, half its diagonal), and the part of the margin of
+  // a test against a plane that does not depend on the plane (occluder_bvh.cpp, ball_side).
+  struct Ball {
+    Vec3d center;
+    double radius = 0, margin = 0;
+  };
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
   void build_cones();
   bool faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const;
@@ -112,6 +123,7 @@ class OccluderBvh {
   std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf
   std::vector<Node> nodes_;
   std::vector<NormalCone> cones_;  // per node
+  std::vector<Ball> balls_;        // per node
   bool brute_force_;
 };
 

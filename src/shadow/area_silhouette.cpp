@@ -482,18 +482,22 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   }
   for (int k = 1; k < slabs; ++k) prefix[k] += prefix[k - 1];
 
-  // Reference: t at a point inside L, from one shadow ray; tall slabs and wide trapezoids first.
+  // Reference: t at a point inside L, from one shadow ray; tall slabs and wide trapezoids first
+  // (the slabs are taken tallest first, ties lowest first; one or two are usually enough, so each
+  // is picked from the rest instead of sorting them all).
   std::vector<int>& by_height = s.by_height;
   by_height.resize(slabs);
   for (int k = 0; k < slabs; ++k) by_height[k] = k;
-  std::sort(by_height.begin(), by_height.end(), [&](int a, int b) {
+  auto taller = [&](int a, int b) {
     return events[a + 1] - events[a] > events[b + 1] - events[b] || (events[a + 1] - events[a] == events[b + 1] - events[b] && a < b);
-  });
+  };
   bool have_reference = false;
   int t0 = 0;
   int rays = 0;
-  for (int k : by_height) {
+  for (int next_slab = 0; next_slab < slabs; ++next_slab) {
     if (rays >= kMaxReferenceRays || have_reference) break;
+    std::iter_swap(by_height.begin() + next_slab, std::min_element(by_height.begin() + next_slab, by_height.end(), taller));
+    const int k = by_height[next_slab];
     const double mid = 0.5 * (events[k] + events[k + 1]);
     const int n = first[k + 1] - first[k];
     std::vector<std::pair<double, int>>& gaps = s.sorted;  // (width, index of the segment on its left)
@@ -550,34 +554,46 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   // A slab thinner than this fraction of R (a nearly horizontal segment makes one an ulp high)
   // cannot order its segments: it is left out (its area is below that fraction of R's).
   const double thin = kThinSlab * (f.rect.y1 - f.rect.y0);
+  // Per segment, the open trapezoid it bounds on the left (a segment has one right neighbour in
+  // a slab), so a trapezoid of the next slab finds the one it continues in one look.
+  std::vector<int>& open_at = s.open_at;
+  std::vector<char>& continued = s.continued;
+  open_at.assign(seg.size(), -1);
+  auto forget_open = [&] {
+    for (const Open& o : open) open_at[o.a] = -1;
+  };
   for (int k = 0; k < slabs; ++k) {
     now.clear();
     if (events[k + 1] - events[k] < thin) {
       for (const Open& o : open) close(o, events[k]);
+      forget_open();
       open.clear();
       continue;
     }
     int t = t0 + prefix[k];
     if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;
     const int n = first[k + 1] - first[k];
+    continued.assign(open.size(), 0);
     for (int i = 0; i < n; ++i) {
       t += step[members[first[k] + i]];
       if (t < 0) return ++s.undecided, SilhouetteVisibility::kUndecided;
       if (t == 0 && i + 1 < n) {
         const int a = members[first[k] + i], b = members[first[k] + i + 1];
         double v_start = events[k];
-        for (const Open& o : open)
-          if (o.a == a && o.b == b) v_start = o.v_start;
+        const int j = open_at[a];
+        if (j >= 0 && open[j].b == b) {
+          v_start = open[j].v_start;
+          continued[j] = 1;
+        }
         now.push_back({a, b, v_start});
       }
     }
     if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;
-    for (const Open& o : open) {
-      bool continued = false;
-      for (const Open& c : now) continued = continued || (c.a == o.a && c.b == o.b);
-      if (!continued) close(o, events[k]);
-    }
+    for (std::size_t j = 0; j < open.size(); ++j)
+      if (!continued[j]) close(open[j], events[k]);
+    forget_open();
     std::swap(open, now);
+    for (std::size_t j = 0; j < open.size(); ++j) open_at[open[j].a] = static_cast<int>(j);
   }
   for (const Open& o : open) close(o, events[slabs]);
   s.visible_pieces += static_cast<long>(pieces.size());

@@ -67,6 +67,8 @@ struct AreaSilhouetteScratch {
   std::vector<std::pair<double, double>> light_uv;
   struct Open { int a, b; double v_start; };  // a trapezoid still growing upward
   std::vector<Open> open, now;
+  std::vector<int> open_at;     // per segment: the index in `open` of the trapezoid it bounds on the left, or -1
+  std::vector<char> continued;  // per trapezoid of `open`: the slab being swept continues it
   LightPieces pieces;
   // Counters for benchmarks and tests.
   long queries = 0, undecided = 0, silhouette_segments = 0, visible_pieces = 0;

@@ -34,10 +34,10 @@ struct ShadeOptions {
   // (src/shadow/silhouette_cluster.h) instead of once per vertex; same results. Off: the
   // benchmarks' baseline.
   bool shadow_clusters = true;
-  // Vertices per cluster (neighbours in Morton order). Any size gives the same results; 16 was
-  // the fastest of 4-128 on the paper's bowling lane (docs/shadows.md, `shadow_bench
-  // --cluster-sizes`).
-  int shadow_cluster_size = 16;
+  // Vertices per cluster (neighbours in Morton order). Any size gives the same results; 32 was
+  // the fastest of 16-128 on the bowling lane and MetalRoughSpheres (docs/shadows.md,
+  // `shadow_bench --cluster-sizes`).
+  int shadow_cluster_size = 32;
   // A mesh vertex is also hidden by the wedges of triangles that touch it across a crease or a
   // seam (src/shadow/crease_wedges.h). Off: every triangle touching the vertex's position hides
   // nothing (the behaviour before; for comparisons).

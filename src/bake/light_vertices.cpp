@@ -66,11 +66,15 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
   std::size_t done = 0;
   // Progress and cancellation are checked between chunks of vertices. A chunk's size adapts to
   // its cost, so that each takes about 30 to 120 ms whether a vertex costs nanoseconds
-  // (unshadowed diffuse) or milliseconds (shadows, exact specular): the progress line moves and
-  // Ctrl-C is answered within about that time. Each vertex is computed independently, so the
-  // chunking never changes a result.
+  // (unshadowed diffuse) or milliseconds (exact specular): the progress line moves and Ctrl-C is
+  // answered within about that time. A primitive with shadowed pairs takes chunks of 0.25 to 1 s:
+  // the shadowed loop answers Ctrl-C between its clusters anyway, and each of its lights runs
+  // one parallel loop over the chunk's clusters, which in a 0.12 s chunk of many lights were too
+  // few to keep both cores busy (MetalRoughSpheres under 8 panels: docs/shadows.md). Each vertex
+  // is computed independently, so the chunking never changes a result.
   constexpr std::size_t kMaxChunk = 1 << 14, kMinChunk = 64;
   constexpr double kChunkSecondsLow = 0.03, kChunkSecondsHigh = 0.12;
+  constexpr double kShadowedChunkSecondsLow = 0.25, kShadowedChunkSecondsHigh = 1.0;
   std::size_t chunk = 1024;
   std::vector<Vec3d> diffuse(kMaxChunk), specular(options.with_specular ? kMaxChunk : 0);
   std::vector<ShadingPoint<double>> points(kMaxChunk);  // per vertex, computed once for all lights
@@ -100,6 +104,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
       any_shadowed = any_shadowed || shadowed(k);
     }
     wedges = shared && any_shadowed ? shared->wedges_of(pi) : CreaseWedges{};
+    const double seconds_low = any_shadowed ? kShadowedChunkSecondsLow : kChunkSecondsLow;
+    const double seconds_high = any_shadowed ? kShadowedChunkSecondsHigh : kChunkSecondsHigh;
     for (std::size_t begin = 0, end = 0; begin < n; begin = end) {
       if (request.cancel && request.cancel->load()) return out;
       const auto chunk_start = std::chrono::steady_clock::now();
@@ -130,8 +136,8 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
       done += end - begin;
       if (request.progress) request.progress(done, total);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_start).count();
-      if (end - begin == chunk && seconds < kChunkSecondsLow) chunk = std::min(kMaxChunk, 2 * chunk);
-      else if (seconds > kChunkSecondsHigh) chunk = std::max(kMinChunk, chunk / 2);
+      if (end - begin == chunk && seconds < seconds_low) chunk = std::min(kMaxChunk, 2 * chunk);
+      else if (seconds > seconds_high) chunk = std::max(kMinChunk, chunk / 2);
     }
   }
   return out;

@@ -308,9 +308,10 @@ void scaling(bool quick) {
               pts.size());
   for (int series = 0; series < 2; ++series) {
     std::printf("%s\n\n| triangles | BVH build (ms) | CPU µs per vertex (silhouettes) | CPU µs per vertex (silhouettes, "
-                "clusters of 16) | CPU µs per vertex (triangle cuts) | cuts / silhouettes | largest difference / mean "
+                "clusters of %d) | CPU µs per vertex (triangle cuts) | cuts / silhouettes | largest difference / mean "
                 "(clusters; cuts) | mean diffuse |\n|---|---|---|---|---|---|---|---|\n",
-                series == 0 ? "(a) the scene grows (constant density field):" : "(b) one sphere, refined:");
+                series == 0 ? "(a) the scene grows (constant density field):" : "(b) one sphere, refined:",
+                o.shadow_cluster_size);
     ShadeOptions cut_options = o;
     cut_options.area_shadows = AreaShadowMethod::kTriangleCuts;
     for (std::size_t n : {100ul, 1000ul, 10000ul, 100000ul, 1000000ul}) {

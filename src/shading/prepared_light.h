@@ -35,8 +35,8 @@ struct ShadeOptions {
   // benchmarks' baseline.
   bool shadow_clusters = true;
   // Vertices per cluster (neighbours in Morton order). Any size gives the same results; 32 was
-  // the fastest of 16-128 on the bowling lane and MetalRoughSpheres (docs/shadows.md,
-  // `shadow_bench --cluster-sizes`).
+  // the fastest of 16-128 on MetalRoughSpheres, and 16-64 are within run-to-run noise on the
+  // bowling lane (docs/shadows.md, `shadow_bench --cluster-sizes`).
   int shadow_cluster_size = 32;
   // A mesh vertex is also hidden by the wedges of triangles that touch it across a crease or a
   // seam (src/shadow/crease_wedges.h). Off: every triangle touching the vertex's position hides

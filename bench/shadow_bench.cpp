@@ -30,6 +30,7 @@
 #include <cstring>
 #include <ctime>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -372,18 +373,15 @@ int main(int argc, char** argv) {
     else if (a == "--scene" && i + 1 < argc) scene = argv[++i];
     else if (a == "--lights" && i + 1 < argc) lights = argv[++i];
     else if (a == "--cluster-sizes" && i + 1 < argc) {
-      for (std::size_t at = 0, comma = 0; at < std::strlen(argv[i + 1]); at = comma + 1) {
-        const std::string list = argv[i + 1];
-        comma = list.find(',', at);
-        if (comma == std::string::npos) comma = list.size();
-        const int size = std::atoi(list.substr(at, comma - at).c_str());
+      std::istringstream list(argv[++i]);
+      for (std::string item; std::getline(list, item, ',');) {
+        const int size = std::atoi(item.c_str());
         if (size < 1) {
           std::fprintf(stderr, "shadow_bench: --cluster-sizes wants positive integers, as 16,64\n");
           return 2;
         }
         cluster_sizes.push_back(size);
       }
-      ++i;
     } else {
       std::fprintf(stderr, "usage: shadow_bench [--quick] [--only 1|2|3] [--scene FILE --lights LIGHTS.json] [--no-cuts] "
                            "[--cluster-sizes N,N,...]\n");

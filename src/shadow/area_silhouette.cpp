@@ -285,9 +285,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   f.rect = {tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
   f.slab = area_slab(light, view, p);
 
-  const Aabb* b = cluster ? &cluster->box : nullptr;
-  const bool clustered = b && cluster->state != SilhouetteCluster::State::kPerVertex && p.x >= b->lo.x &&
-                         p.x <= b->hi.x && p.y >= b->lo.y && p.y <= b->hi.y && p.z >= b->lo.z && p.z <= b->hi.z;
+  const bool clustered = cluster && cluster->state != SilhouetteCluster::State::kPerVertex && cluster->box.contains(p);
   const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
   if (clustered && cluster->leaves.size() <= SilhouetteCluster::kFlatLeaves) {

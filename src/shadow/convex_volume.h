@@ -16,6 +16,9 @@ struct Aabb {
   void grow(const Vec3d& p) { lo = min(lo, p); hi = max(hi, p); }
   void grow(const Aabb& b) { lo = min(lo, b.lo); hi = max(hi, b.hi); }
   bool empty() const { return lo.x > hi.x; }
+  bool contains(const Vec3d& p) const {  // boundary included
+    return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z;
+  }
   bool overlaps(const Aabb& b) const {
     return lo.x <= b.hi.x && b.lo.x <= hi.x && lo.y <= b.hi.y && b.lo.y <= hi.y && lo.z <= b.hi.z && b.lo.z <= hi.z;
   }

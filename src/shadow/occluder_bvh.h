@@ -103,7 +103,7 @@ class OccluderBvh {
     int solid = -1;      // the closed solid all its triangles belong to, -1 for none, -2 if mixed
   };
   // A ball that holds a node's box (its centre, half its diagonal), and the part of the margin of
-  // a test against a plane that does not depend on the plane (occluder_bvh.cpp, ball_side).
+  // a test against a plane that does not depend on the plane (outside(), inside()).
   struct Ball {
     Vec3d center;
     double radius = 0, margin = 0;

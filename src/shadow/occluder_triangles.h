@@ -45,8 +45,7 @@ OccluderTriangles occluders_of(const Scene& scene);
 inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, const Vec3d& p) {
   if (t.solid.empty() || t.solid[index] < 0) return false;
   const Aabb& box = t.solid_bounds[t.solid[index]];
-  if (p.x >= box.lo.x && p.x <= box.hi.x && p.y >= box.lo.y && p.y <= box.hi.y && p.z >= box.lo.z && p.z <= box.hi.z)
-    return false;
+  if (box.contains(p)) return false;
   const auto& c = t.corners[index];
   return dot(cross(c[1] - c[0], c[2] - c[0]), p - c[0]) < 0;
 }

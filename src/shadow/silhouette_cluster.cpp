@@ -39,8 +39,7 @@ std::int8_t facing_over_box(const OccluderTriangles& triangles, std::uint32_t t,
   for (int a = 0; a < 3; ++a)
     if (b.lo[a] == b.hi[a] && c[0][a] == b.lo[a] && c[1][a] == b.lo[a] && c[2][a] == b.lo[a]) return 0;
   for (const Vec3d& x : c)
-    if (x.x >= b.lo.x && x.x <= b.hi.x && x.y >= b.lo.y && x.y <= b.hi.y && x.z >= b.lo.z && x.z <= b.hi.z)
-      return kVariableFacing;  // it may touch a vertex of the cluster
+    if (b.contains(x)) return kVariableFacing;  // it may touch a vertex of the cluster
   // side(P) = n.(c0 - P) is linear in P: over the box it spans side(centre) -+ sum |n_i| h_i
   // (h the box's half extent). reach bounds |c0 - P| over the box.
   const Vec3d middle = b.center(), half = (b.hi - b.lo) * 0.5;
@@ -167,15 +166,12 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
     cluster.slot_of.assign(triangles.size(), 0);
     cluster.slot_stamp.assign(triangles.size(), 0);
     cluster.edge_stamp.assign(edges.size(), 0);
-    cluster.edge_weight.assign(edges.size(), 0);
-    cluster.listed_stamp.assign(edges.size(), 0);
     cluster.leaf_position.assign(occluders.node_count(), 0);
     cluster.node_stamp.assign(occluders.node_count(), 0);
     cluster.stamp = 0;
   }
   if (++cluster.stamp == 0) {
-    for (auto* stamps : {&cluster.facing_stamp, &cluster.slot_stamp, &cluster.edge_stamp, &cluster.listed_stamp,
-                         &cluster.node_stamp})
+    for (auto* stamps : {&cluster.facing_stamp, &cluster.slot_stamp, &cluster.edge_stamp, &cluster.node_stamp})
       std::fill(stamps->begin(), stamps->end(), 0);
     cluster.stamp = 1;
   }
@@ -194,23 +190,16 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
         if (!(h.signed_distance(x) > slab_margin * length(h.normal))) return false;
     return true;
   };
-  // The weight over B of edge e, computed once (edge_stamp).
+  // The weight over B of edge e, or kVariable.
   auto weight_over_box = [&](std::uint32_t e) {
-    if (cluster.edge_stamp[e] != cluster.stamp) {
-      cluster.edge_stamp[e] = cluster.stamp;
-      int weight = 0;
-      bool variable = false;
-      for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1] && !variable; ++k) {
-        const std::uint32_t code = edges.incident[k];
-        const std::int8_t f = facing(code / 3);
-        variable = f == kVariableFacing;
-        weight += f * edges.direction_of[code / 3][code % 3];
-      }
-      cluster.edge_weight[e] = static_cast<std::int8_t>(variable || std::abs(weight) >= SilhouetteCluster::kVariable
-                                                            ? SilhouetteCluster::kVariable
-                                                            : weight);
+    int weight = 0;
+    for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
+      const std::uint32_t code = edges.incident[k];
+      const std::int8_t f = facing(code / 3);
+      if (f == kVariableFacing) return SilhouetteCluster::kVariable;
+      weight += f * edges.direction_of[code / 3][code % 3];
     }
-    return cluster.edge_weight[e];
+    return std::abs(weight) >= SilhouetteCluster::kVariable ? SilhouetteCluster::kVariable : weight;
   };
   // The slot of triangle t, made on first use.
   cluster.slots.clear();
@@ -225,9 +214,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
       s.normal_length = length(s.normal);
       s.triangle = t;
       s.facing = facing(t);
-      s.may_touch = false;
-      for (const Vec3d& x : c) s.may_touch = s.may_touch || (x.x >= box.lo.x && x.x <= box.hi.x && x.y >= box.lo.y &&
-                                                             x.y <= box.hi.y && x.z >= box.lo.z && x.z <= box.hi.z);
+      s.may_touch = box.contains(c[0]) || box.contains(c[1]) || box.contains(c[2]);
       s.in_solid = !triangles.solid.empty() && triangles.solid[t] >= 0;
       cluster.slots.push_back(s);
     }
@@ -252,12 +239,12 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
       if (facing(t) != 0 && !inside_every_slab(t)) cluster.chord_slots.push_back(slot(t));
       for (int j = 0; j < 3; ++j) {
         const std::uint32_t e = edges.edge_of[t][j];
-        if (cluster.listed_stamp[e] == cluster.stamp) continue;  // listed in this or an earlier leaf
-        const std::int8_t weight = weight_over_box(e);
+        if (cluster.edge_stamp[e] == cluster.stamp) continue;  // weighed in this or an earlier leaf
+        cluster.edge_stamp[e] = cluster.stamp;
+        const int weight = weight_over_box(e);
         if (weight == 0) continue;
-        cluster.listed_stamp[e] = cluster.stamp;
         cluster.weighed_edges.push_back(e);
-        cluster.listed_weight.push_back(weight);
+        cluster.listed_weight.push_back(static_cast<std::int8_t>(weight));
         if (weight == SilhouetteCluster::kVariable)
           for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
             const std::uint32_t code = edges.incident[k];

@@ -46,13 +46,13 @@ struct SilhouetteCluster {
   };
   State state = State::kPerVertex;
   Aabb box;  // B; a vertex outside it (the light barely above its horizon) searches alone
-  // The triangles that may carry a silhouette edge or a chord seen from some point of B,
-  // ascending; and per triangle and per edge of them, valid where the stamp is the cluster's:
-  // the triangle's facing over B (+1, -1, 0, or kVariable) and the edge's weight over B (or
-  // kVariable).
+  // A facing or an edge weight that is not the same from every point of B.
   static constexpr int kVariable = 100;
   std::vector<std::uint32_t> leaves;  // the BVH leaves the cluster's search reached that hold an item (below)
-  std::vector<std::uint32_t> candidates, candidates_begin;  // leaves[i]'s: [begin[i], begin[i + 1])
+  // Scratch of prepare_silhouette_cluster: the triangles that may carry a silhouette edge or a
+  // chord seen from some point of B, per leaf its search reached (before the leaves without items
+  // are dropped from `leaves`): the i-th leaf's are [candidates_begin[i], candidates_begin[i + 1]).
+  std::vector<std::uint32_t> candidates, candidates_begin;
   // A triangle a vertex of B reads: its facing over B, and for kVariable what the vertex needs to
   // find its own (facing_from_plane): its plane, and whether it may touch the vertex or be a
   // culled back face of a closed surface.
@@ -83,9 +83,10 @@ struct SilhouetteCluster {
   // prunes whole subtrees, instead of testing every leaf of the cluster.
   static constexpr std::size_t kFlatLeaves = 4096;
   std::vector<std::uint32_t> leaf_position, node_stamp;
-  std::vector<std::int8_t> facing, edge_weight;
-  std::vector<std::uint32_t> facing_stamp, edge_stamp;
-  std::vector<std::uint32_t> slot_of, slot_stamp, listed_stamp;  // per triangle, per edge
+  // Per triangle: its facing over B and its slot; per edge: weighed for this cluster (valid where
+  // the stamp is the cluster's).
+  std::vector<std::int8_t> facing;
+  std::vector<std::uint32_t> facing_stamp, slot_of, slot_stamp, edge_stamp;
   std::uint32_t stamp = 0;
 };
 

@@ -319,8 +319,7 @@ TEST_CASE("clusters = one search per vertex: a grid of spheres lighting each oth
 TEST_CASE("clusters: their size does not change the result") {
   // A vertex reads an edge only through the first of the cluster's leaves that lists it, and the
   // facings of the cluster's variable triangles from their stored planes; clusters of 1 to 200
-  // vertices (one vertex, and clusters that the width limit sends to the per-vertex search) must
-  // light every vertex as the default size does, shadowed or not.
+  // vertices must light every vertex as the default size does, shadowed or not.
   std::vector<Tri> tris;
   std::vector<ShadingPoint<double>> points;
   sphere_grid(tris, points);

@@ -9,10 +9,12 @@
 // piece with the largest estimate until Σ error <= max(tolerance |Σ value|, floor), the work list
 // is full, or the worst piece is too narrow to bisect in R. The initial pieces are the caller's:
 // add_graded() cuts an interval around the integrand's known peaks so the adaptivity starts near
-// them resolved.
+// them resolved. A caller that can bound |∫ f| over a piece may add it deferred: it counts as value
+// 0 with its bound as error, and refine() evaluates it (instead of bisecting) only when it is the
+// worst piece; where the bounds are already below the target, it is never evaluated.
 //
 // Contract:
-//  - no heap: the work list is a fixed array of kMaxPieces pieces (48 bytes each in double), a
+//  - no heap: the work list is a fixed array of kMaxPieces pieces (40 bytes each in double), a
 //    local variable of the kernel; pieces beyond it are dropped by add(), so the caller bounds the
 //    initial cuts (add_graded's kMaxCuts) well below kMaxPieces;
 //  - deterministic: the same calls in the same order give the same bits (the running sums are
@@ -55,6 +57,7 @@ class AdaptiveKronrod {
   struct Piece {
     R t0, t1, value, error;
     int curve;
+    bool deferred;  // not evaluated yet: value 0, error the caller's bound
   };
 
   // Adds ∫_{t0}^{t1} f(t) dt of curve `curve`, times `weight`, as one piece (dropped when the work
@@ -63,13 +66,19 @@ class AdaptiveKronrod {
   void add(const F& f, int curve, R t0, R t1, R weight) {
     if (size_ >= kMaxPieces) return;
     Piece& p = heap_[size_];
-    p.t0 = t0; p.t1 = t1; p.curve = curve;
+    p.t0 = t0; p.t1 = t1; p.curve = curve; p.deferred = false;
     evaluate(f, p);
     p.value *= weight;
     p.error *= std::abs(weight);
-    value_ += p.value; error_ += p.error;
-    ++size_;
-    std::push_heap(heap_.begin(), heap_.begin() + size_, less_error);
+    push();
+  }
+
+  // Adds [t0, t1] of curve `curve` unevaluated, with `bound` >= |weight ∫_{t0}^{t1} f dt| as its
+  // error (dropped when the work list is full).
+  void add_deferred(int curve, R t0, R t1, R bound) {
+    if (size_ >= kMaxPieces) return;
+    heap_[size_] = Piece{t0, t1, R(0), bound, curve, true};
+    push();
   }
 
   // Adds [t0, t1] of curve `curve` cut at graded points around each of `count` centres: the centre
@@ -78,6 +87,14 @@ class AdaptiveKronrod {
   // in all (the two ends included).
   template <int kMaxCuts, class F>
   void add_graded(const F& f, int curve, R t0, R t1, const R* centers, const R* widths, int count, R weight) {
+    add_graded<kMaxCuts>(f, curve, t0, t1, centers, widths, count, weight, [](R, R) { return R(-1); });
+  }
+
+  // As above, but a piece [a, b] for which bound(a, b) >= 0 is added deferred, with error
+  // |weight| bound(a, b); bound(a, b) >= |∫_a^b f dt| is the caller's promise (negative: no bound).
+  template <int kMaxCuts, class F, class B>
+  void add_graded(const F& f, int curve, R t0, R t1, const R* centers, const R* widths, int count, R weight,
+                  const B& bound) {
     std::array<R, kMaxCuts> cuts{};
     int k = 0;
     cuts[k++] = t0;
@@ -89,8 +106,12 @@ class AdaptiveKronrod {
       for (R s = widths[i]; s < t1 - t0 && k + 2 <= kMaxCuts; s *= R(4)) { cut(centers[i] - s); cut(centers[i] + s); }
     }
     std::sort(cuts.begin(), cuts.begin() + k);
-    for (int i = 0; i + 1 < k; ++i)
-      if (cuts[i + 1] > cuts[i]) add(f, curve, cuts[i], cuts[i + 1], weight);
+    for (int i = 0; i + 1 < k; ++i) {
+      if (!(cuts[i + 1] > cuts[i])) continue;
+      const R b = bound(cuts[i], cuts[i + 1]);
+      if (b >= R(0)) add_deferred(curve, cuts[i], cuts[i + 1], b * std::abs(weight));
+      else add(f, curve, cuts[i], cuts[i + 1], weight);
+    }
   }
 
   // Bisects the worst piece until the error target is met (see the header), then returns the sum.
@@ -103,16 +124,18 @@ class AdaptiveKronrod {
       std::pop_heap(heap_.begin(), heap_.begin() + size_, less_error);
       const Piece p = heap_[--size_];
       value_ -= p.value; error_ -= p.error;
-      const R mid = (p.t0 + p.t1) / 2;
-      if (!(mid > p.t0 && mid < p.t1)) {  // cannot be split further: keep it, stop
-        heap_[size_++] = p;
-        std::push_heap(heap_.begin(), heap_.begin() + size_, less_error);
-        value_ += p.value; error_ += p.error;
-        break;
-      }
       const auto f = [&](R t) { return integrand(p.curve, t); };
-      add(f, p.curve, p.t0, mid, weight(p.curve));
-      add(f, p.curve, mid, p.t1, weight(p.curve));
+      const R mid = (p.t0 + p.t1) / 2;
+      if (p.deferred) {  // the worst piece is an unevaluated one: evaluate it whole
+        add(f, p.curve, p.t0, p.t1, weight(p.curve));
+      } else if (!(mid > p.t0 && mid < p.t1)) {  // cannot be split further: keep it, stop
+        heap_[size_] = p;
+        push();
+        break;
+      } else {
+        add(f, p.curve, p.t0, mid, weight(p.curve));
+        add(f, p.curve, mid, p.t1, weight(p.curve));
+      }
       // Running sums drift by rounding; recount them exactly now and then.
       if (++splits % 64 == 0 || !std::isfinite(error_)) {
         value_ = 0; error_ = 0;
@@ -125,6 +148,13 @@ class AdaptiveKronrod {
   }
 
  private:
+  // Pushes heap_[size_] onto the heap and into the running sums.
+  void push() {
+    value_ += heap_[size_].value; error_ += heap_[size_].error;
+    ++size_;
+    std::push_heap(heap_.begin(), heap_.begin() + size_, less_error);
+  }
+
   template <class F>
   static void evaluate(const F& f, Piece& p) {
     using K = kronrod_detail::Kronrod15<R>;

@@ -30,8 +30,12 @@
 //     point closest to P (the 1/|x|^2 peak, width ~ its distance d_P: graded cuts at d_P 4^k) and at
 //     the point closest in angle to Rv (the lobe, width ~ |x| / sqrt(m + 1): graded likewise);
 //     the piece with the largest |K15 - G7| is bisected until Σ error <= tol |Σ value|
-//     (tol = SpecularOptions::exact_tolerance) or the fixed work list is full.
-//  The work list is a fixed array (kExactMaxPieces * 48 bytes = 96 KiB of stack): no heap.
+//     (tol = SpecularOptions::exact_tolerance) or the fixed work list is full. In the tail form
+//     each initial piece enters unevaluated with a bound of its integral as its error, and is
+//     evaluated only if that bound becomes the largest error: pieces the lobe does not reach
+//     (c^{m+1} ~ 1e-30 of the peak piece's, say) are never evaluated, and where c^{m+1} underflows
+//     on the whole light the result is 0 at once.
+//  The work list is a fixed array (kExactMaxPieces * 40 bytes = 80 KiB of stack): no heap.
 //  Initial cuts: at most 48 per edge (kExactMaxCuts).
 //
 // Departures: none from the definition; the paper's Is is the peak (area_specular_peak.h).
@@ -96,9 +100,11 @@ struct EdgeIntegrand {
 // rv is normalised here: the identities below (|Rv x x|^2 = |x|^2 - (Rv.x)^2) need a unit Rv, and
 // the definition's lobe is max(0, Rv.w)^m with unit Rv (a float-rounded Rv is off by ~1e-7, which
 // m = 1e3 would turn into 1e-4).
+// defer_tails = false evaluates every initial piece of the tail form (the form before the bound
+// below; tests compare the two).
 template <class R>
 R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& view,
-                      const Vec3<R>& rv_in, R shininess, R tolerance) {
+                      const Vec3<R>& rv_in, R shininess, R tolerance, bool defer_tails = true) {
   using namespace area_exact_detail;
   if (!view.lit || horizon_clipped.count < 3) return R(0);
   const Vec3<R> rv = normalize(rv_in);
@@ -115,7 +121,11 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   // can be 1e-12 of them (a lobe that barely reaches the light).
   // Only when Rv is at least a lobe width away from the light: closer, the tail's integrand
   // c^{m+1} / |Rv x x|^2 has a peak of height 1 / angle^2 and the full form is the better one.
-  const bool tail = shininess > R(0) && area_specular_peak_direction(*poly, view, rv).angle > lobe_width;
+  const R peak_angle = shininess > R(0) ? area_specular_peak_direction(*poly, view, rv).angle : R(0);
+  const bool tail = peak_angle > lobe_width;
+  // The lobe at its peak on the light, c_max^{m+1}, underflows: so does the integrand everywhere
+  // (c <= c_max), and the sum is 0.
+  if (tail && defer_tails && std::exp((shininess + R(1)) * std::log(std::cos(peak_angle))) == R(0)) return R(0);
 
   // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.
   std::array<EdgeIntegrand<R>, kMaxClipVertices> edge{};
@@ -137,13 +147,14 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
     const R len = std::sqrt(e2);
     const R tp = std::clamp(-dot(a, e) / e2, R(0), R(1));
     R centers[2] = {tp, tp}, widths[2] = {length(a + e * tp) / len, R(0)};
+    R tr = R(0);  // where c is largest on the edge, if inside it (an end otherwise)
     if (shininess > R(0)) {
       // x(t) parallel to the projection of Rv on the edge's plane: a x w + t (e x w) = 0.
       const Vec3<R> pole = cr / length(cr);
       const Vec3<R> wdir = rv - pole * dot(rv, pole);
       const R den = dot(cross(e, wdir), pole);
       if (den != R(0)) {
-        const R tr = std::clamp(-dot(cross(a, wdir), pole) / den, R(0), R(1));
+        tr = std::clamp(-dot(cross(a, wdir), pole) / den, R(0), R(1));
         // the integrand's peak width there: the lobe's, or (tail form) the angle to Rv if smaller
         const Vec3<R> xr = a + e * tr;
         const R angle = std::atan2(length(cross(rv, xr)), dot(rv, xr));
@@ -151,7 +162,28 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
         widths[1] = std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len;
       }
     }
-    quad.template add_graded<kExactMaxCuts>(edge[i], i, R(0), R(1), centers, widths, 2, w);
+    if (!tail || !defer_tails) {
+      quad.template add_graded<kExactMaxCuts>(edge[i], i, R(0), R(1), centers, widths, 2, w);
+      continue;
+    }
+    // Tail pieces are added deferred (evaluated only where they matter), bounded as follows. c is
+    // unimodal along the edge (x / |x| runs along a great circle, on which c = C cos(psi - psi0),
+    // and the lobe clip keeps |psi - psi0| <= pi/2), so on [t0, t1] its largest value is at t0, t1
+    // or tr; |x|^2 is convex in t with its minimum at tp. With c^{m+1} / |Rv x x|^2 =
+    // c^{m+1} / (|x|^2 (1 - c^2)) the integrand is below c_max^{m+1} / (|x|_min^2 (1 - c_max^2)).
+    const auto cos_at = [&](R t) {
+      const Vec3<R> x = a + e * t;
+      return std::max(dot(rv, x) / length(x), R(0));
+    };
+    const auto bound = [&](R t0, R t1) {
+      const R c = std::max({cos_at(t0), cos_at(t1), cos_at(std::clamp(tr, t0, t1))});
+      const R sin2 = (R(1) - c) * (R(1) + c);
+      if (!(sin2 > R(0))) return R(-1);  // no bound: evaluate the piece
+      const R r2 = length_squared(a + e * std::clamp(tp, t0, t1));
+      // 1.001: room for the rounding of c^{m+1} ((m + 1) eps relative) and of 1 - c^2
+      return R(1.001) * (t1 - t0) * std::exp((shininess + R(1)) * std::log(c)) / (r2 * sin2);
+    };
+    quad.template add_graded<kExactMaxCuts>(edge[i], i, R(0), R(1), centers, widths, 2, w, bound);
   }
 
   // 3. Global adaptivity: bisect the piece with the largest error estimate.

@@ -67,3 +67,31 @@ TEST_CASE("adaptive Gauss-Kronrod: a piece too narrow to bisect stops the refine
   CHECK(value >= 1.0);
   CHECK(value <= 1.0 + 1e10 * (hi - lo) * 1.0000001);
 }
+
+TEST_CASE("adaptive Gauss-Kronrod: a deferred piece is evaluated whole when its bound matters, never otherwise") {
+  // Curve 0: 1 on [0, 1], evaluated. Curve 1: 1e-3 on [0, 1], deferred with the bound 2e-3.
+  // Curve 2: deferred with bound 0, its integrand must never run.
+  int calls_1 = 0, calls_2 = 0;
+  const auto f = [&](int c, double) {
+    if (c == 1) ++calls_1;
+    if (c == 2) ++calls_2;
+    return c == 0 ? 1.0 : 1e-3;
+  };
+  for (const double tolerance : {1e-2, 1e-6}) {
+    calls_1 = calls_2 = 0;
+    AdaptiveKronrod<double, 64> quad;
+    quad.add([&](double t) { return f(0, t); }, 0, 0.0, 1.0, 1.0);
+    quad.add_deferred(1, 0.0, 1.0, 2e-3);
+    quad.add_deferred(2, 0.0, 1.0, 0.0);
+    const double value = quad.refine(f, [](int) { return 1.0; }, tolerance);
+    INFO("tolerance " << tolerance << ": " << value << ", curve 1 evaluated " << calls_1 << " times");
+    CHECK(calls_2 == 0);
+    if (tolerance == 1e-2) {  // 2e-3 <= 1e-2 x 1: left out, within the tolerance
+      CHECK(calls_1 == 0);
+      CHECK(value == 1.0);
+    } else {  // needed: one 15-point evaluation of the whole piece, not a bisection
+      CHECK(calls_1 == 15);
+      CHECK(std::abs(value - 1.001) <= 1e-15);
+    }
+  }
+}

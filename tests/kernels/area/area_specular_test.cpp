@@ -320,6 +320,59 @@ TEST_CASE("area specular exact: stiff cases") {
   }
 }
 
+// Rv off the light by more than a lobe width: the tail form, whose pieces are evaluated only where
+// their bound (area_specular_exact.h) says they can matter. Against every piece evaluated (the
+// same integrand, same tolerance) and, up to m = 1e3, against the area quadrature. Rv leaves the
+// square past its edge x = 1 (k lobe widths beyond it) or past its corner (1, 1).
+TEST_CASE("area specular exact: lobe tails, deferred pieces vs every piece evaluated and vs the area quadrature") {
+  const Vec3d up{0, 0, 1};
+  const auto poly = square_down(1, 1);
+  double worst_eager = 0, worst_ref = 0;
+  int nonzero = 0;
+  for (double m : {10.0, 100.0, 1e3, 1e4}) {
+    const double lobe = 1 / std::sqrt(m + 1);
+    for (const double k : {1.5, 3.0, 8.0}) {
+      for (const bool corner : {false, true}) {
+        const double beta = (corner ? std::atan(std::sqrt(2.0)) : M_PI / 4) + k * lobe;
+        if (beta > 1.5) continue;  // Rv near or past P's horizon: P sees no lobe there
+        const Vec3d toward = corner ? normalize(Vec3d{1, 1, 0}) : normalize(Vec3d{1, 0.05, 0});
+        const ShadingPoint<double> sp{{0, 0, 0}, up, normalize(toward * std::sin(beta) + up * std::cos(beta)), m};
+        const PreparedAreaLight<double> light = prepare_area_light(light_of(poly));
+        const AreaView<double> view = make_area_view(light, sp.p);
+        ClipPolygon<double> visible;
+        clip_to_horizon(light, view, sp.n, visible);
+        const double deferred = area_specular_exact(visible, view, sp.rv, m, 1e-9);
+        const double eager = area_specular_exact(visible, view, sp.rv, m, 1e-9, false);
+        INFO("m=", m, " k=", k, std::string(corner ? " corner" : " edge"), ": deferred=", deferred, " eager=", eager);
+        REQUIRE(eager > 0);
+        const double rel = std::abs(deferred - eager) / eager;
+        CHECK(rel <= 2e-9);
+        worst_eager = std::max(worst_eager, rel);
+        // At a loose tolerance the bounds decide which pieces are skipped: what they leave out
+        // must still be within the tolerance (a bound that is too small fails here).
+        for (const double tol : {1e-2, 1e-4, 1e-6}) {
+          const double loose = area_specular_exact(visible, view, sp.rv, m, tol);
+          INFO("tolerance ", tol, ": ", loose);
+          CHECK(std::abs(loose - eager) <= tol * eager);
+        }
+        ++nonzero;
+        if (m <= 1e3) {
+          const double ref = reference_specular({poly}, sp, false, 1e-11L);
+          const double rel_ref = std::abs(deferred - ref) / ref;
+          INFO("reference=", ref);
+          CHECK(rel_ref <= 1e-9);  // the stiff-case bar of the exact specular (3.5e-12 measured)
+          worst_ref = std::max(worst_ref, rel_ref);
+        }
+      }
+    }
+  }
+  // Far enough off that the lobe underflows everywhere on the light: 0 without evaluating.
+  const ShadingPoint<double> far{{0, 0, 0}, up, normalize(Vec3d{1, 0, 0.2}), 1e4};
+  CHECK(shade_area(light_of(poly), far, spec_options(SpecularMethod::kExact, 1e-9)).specular == 0);
+  MESSAGE("area exact specular tails: ", nonzero, " cases, deferred vs eager max rel.diff ", worst_eager,
+          ", vs the area quadrature (m <= 1e3) ", worst_ref);
+}
+
 // m -> 0 continuity: the lobe at m = 0 is the limit m -> 0+, [Rv.w > 0] (core/robust_math.h), so the
 // exact specular at m = 0 is the solid angle of the part of the light in front of the lobe's
 // half-space, and m = 1e-12 gives the same to ~1e-11. Against the area quadrature (which clips to

@@ -29,12 +29,13 @@
 //  3. globally adaptive Gauss-Kronrod (7/15 points, adaptive_kronrod.h) over all edges: each edge starts split at the
 //     point closest to P (the 1/|x|^2 peak, width ~ its distance d_P: graded cuts at d_P 4^k) and at
 //     the point closest in angle to Rv (the lobe, width ~ |x| / sqrt(m + 1): graded likewise);
-//     the piece with the largest |K15 - G7| is bisected until Σ error <= tol |Σ value|
-//     (tol = SpecularOptions::exact_tolerance) or the fixed work list is full. In the tail form
-//     each initial piece enters unevaluated with a bound of its integral as its error, and is
-//     evaluated only if that bound becomes the largest error: pieces the lobe does not reach
-//     (c^{m+1} ~ 1e-30 of the peak piece's, say) are never evaluated, and where c^{m+1} underflows
-//     on the whole light the result is 0 at once.
+//     the piece with the largest |K15 - G7| is bisected until Σ error <= max(tol |Σ value|,
+//     tol eps 2 pi / (m + 1)) (tol = SpecularOptions::exact_tolerance; the second term is tol
+//     times the rounding of the largest value Is can take at this m) or the fixed work list is
+//     full. In the tail form each initial piece enters unevaluated with a bound of its integral as
+//     its error, and is evaluated only if that bound becomes the largest error: pieces the lobe
+//     does not reach are never evaluated, and where the lobe's peak on the light bounds Is below
+//     that absolute target the result is 0 at once.
 //  The work list is a fixed array (kExactMaxPieces * 40 bytes = 80 KiB of stack): no heap.
 //  Initial cuts: at most 48 per edge (kExactMaxCuts).
 //
@@ -100,11 +101,11 @@ struct EdgeIntegrand {
 // rv is normalised here: the identities below (|Rv x x|^2 = |x|^2 - (Rv.x)^2) need a unit Rv, and
 // the definition's lobe is max(0, Rv.w)^m with unit Rv (a float-rounded Rv is off by ~1e-7, which
 // m = 1e3 would turn into 1e-4).
-// defer_tails = false evaluates every initial piece of the tail form (the form before the bound
-// below; tests compare the two).
+// bounded_tails = false evaluates every initial piece of the tail form and has no absolute target
+// (relative tolerance only; tests compare the two).
 template <class R>
 R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& view,
-                      const Vec3<R>& rv_in, R shininess, R tolerance, bool defer_tails = true) {
+                      const Vec3<R>& rv_in, R shininess, R tolerance, bool bounded_tails = true) {
   using namespace area_exact_detail;
   if (!view.lit || horizon_clipped.count < 3) return R(0);
   const Vec3<R> rv = normalize(rv_in);
@@ -123,9 +124,15 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   // c^{m+1} / |Rv x x|^2 has a peak of height 1 / angle^2 and the full form is the better one.
   const R peak_angle = shininess > R(0) ? area_specular_peak_direction(*poly, view, rv).angle : R(0);
   const bool tail = peak_angle > lobe_width;
-  // The lobe at its peak on the light, c_max^{m+1}, underflows: so does the integrand everywhere
-  // (c <= c_max), and the sum is 0.
-  if (tail && defer_tails && std::exp((shininess + R(1)) * std::log(std::cos(peak_angle))) == R(0)) return R(0);
+  // Absolute error target: tol eps 2 pi / (m + 1), tol times the rounding of the largest value Is
+  // takes at this m (2 pi / (m + 1), a light covering the half-space around Rv). Values below it
+  // are astronomically small tails (1e-50 .. 1e-300 on the spheres of MetalRoughSpheres), whose
+  // edge terms can cancel by 1e7: relative accuracy there cost 10 pieces and bought nothing an
+  // output can hold.
+  const R floor = tolerance * std::numeric_limits<R>::epsilon() * R(2 * M_PI) / (shininess + R(1));
+  // Is <= c_max^m Omega <= c_max^m 2 pi (c <= c_max = cos(peak angle) on the light, whose solid
+  // angle is at most 2 pi): below the floor, 0 is within it.
+  if (tail && bounded_tails && std::exp(shininess * std::log(std::cos(peak_angle))) * R(2 * M_PI) <= floor) return R(0);
 
   // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.
   std::array<EdgeIntegrand<R>, kMaxClipVertices> edge{};
@@ -162,7 +169,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
         widths[1] = std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len;
       }
     }
-    if (!tail || !defer_tails) {
+    if (!tail || !bounded_tails) {
       quad.template add_graded<kExactMaxCuts>(edge[i], i, R(0), R(1), centers, widths, 2, w);
       continue;
     }
@@ -187,7 +194,8 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   }
 
   // 3. Global adaptivity: bisect the piece with the largest error estimate.
-  const R value = quad.refine([&](int i, R t) { return edge[i](t); }, [&](int i) { return weight[i]; }, tolerance);
+  const R value = quad.refine([&](int i, R t) { return edge[i](t); }, [&](int i) { return weight[i]; }, tolerance,
+                              bounded_tails ? floor : R(0));
   if (tail) return std::max(view.orient * value, R(0));  // Is = orient Σ w_i ∫ c^{m+1} / |Rv x x|^2
   return std::max(-view.orient * value, R(0));
 }

@@ -46,9 +46,10 @@ R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>&
 }
 
 // Shades with a prepared light (per-light constants computed once): the bake loop's form.
+// with_diffuse = false leaves the diffuse 0 (a caller that has it from the batch kernel).
 template <class T>
 Response<T> shade_area(const PreparedAreaLight<T>& light, const ShadingPoint<T>& sp,
-                       const SpecularOptions& spec) {
+                       const SpecularOptions& spec, bool with_diffuse = true) {
   using R = AreaReal<T>;
   const Vec3<R> p = static_cast<Vec3<R>>(sp.p);
   const Vec3<R> n = static_cast<Vec3<R>>(sp.n);
@@ -58,7 +59,7 @@ Response<T> shade_area(const PreparedAreaLight<T>& light, const ShadingPoint<T>&
   clip_to_horizon(light, view, n, visible);
   if (visible.count < 3) return {};
   Response<T> r;
-  r.diffuse = static_cast<T>(area_diffuse_contour(light, view, visible, n));
+  if (with_diffuse) r.diffuse = static_cast<T>(area_diffuse_contour(light, view, visible, n));
   const Vec3<R> rv = static_cast<Vec3<R>>(sp.rv);
   const R m = static_cast<R>(sp.shininess);
   switch (spec.method) {

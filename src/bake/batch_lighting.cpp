@@ -55,9 +55,11 @@ void light_block(const ScenePlan& plan, const std::vector<int>& lights, const Ba
       }
       continue;
     }
-    // The specular by the scalar double kernel (its diffuse is the one the batch lane replaces).
+    // The specular by the scalar double kernel; its diffuse only where the batch lane was stiff.
+    ShadeOptions specular_only = plan.shade;
+    specular_only.with_diffuse = false;
     for (long v = begin; v < end; ++v) {
-      const Response<double> r = shade(light, points[v], plan.shade);
+      const Response<double> r = shade(light, points[v], out.stiff[v] ? plan.shade : specular_only);
       diffuse[v] += light.radiance * (out.stiff[v] ? r.diffuse : static_cast<double>(out.diffuse[v]));
       specular[v] += light.radiance * r.specular;
     }

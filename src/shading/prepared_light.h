@@ -27,6 +27,9 @@ enum class AreaShadowMethod { kSilhouette, kTriangleCuts };
 
 struct ShadeOptions {
   bool with_specular = true;
+  // false: the caller has the diffuse already (a batch kernel's) and reads only the specular;
+  // area lights then skip their diffuse (Response::diffuse is 0), the other models compute it.
+  bool with_diffuse = true;
   SpecularOptions specular;
   LinearDiffuseOptions linear;
   AreaShadowMethod area_shadows = AreaShadowMethod::kSilhouette;
@@ -117,7 +120,7 @@ Response<T> shade_kernel(const K& k, const ShadingPoint<T>& sp, const ShadeOptio
     SpecularOptions s = options.specular;
     if (!spec) s.method = SpecularMethod::kNone;
     if constexpr (std::is_same_v<K, LinearLight<T>>) return shade_linear(k, sp, s, options.linear);
-    else if constexpr (std::is_same_v<K, PreparedAreaLight<T>>) return shade_area(k, sp, s);
+    else if constexpr (std::is_same_v<K, PreparedAreaLight<T>>) return shade_area(k, sp, s, options.with_diffuse);
     else return shade_disk(k, sp, s);
   }
 }

@@ -53,6 +53,22 @@ TEST_CASE("square panel centred above the point: the closed form of a parallel r
   }
 }
 
+TEST_CASE("with_diffuse = false: a panel's specular is unchanged and its diffuse skipped (0)") {
+  // The bake's scalar specular path asks for the specular only where the batch kernel has the diffuse.
+  const auto sp = make_shading_point<double>({0.2, 0.1, 0}, {0, 0, 1}, {0.5, 0, 5}, 40.0);
+  LightSource l;
+  l.type = LightType::kArea;
+  l.polygon = {{-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}};
+  const PreparedLight<double> light = prepare_light<double>(l);
+  ShadeOptions both, specular_only;
+  specular_only.with_diffuse = false;
+  const Response<double> full = shade(light, sp, both), spec = shade(light, sp, specular_only);
+  CHECK(full.diffuse > 0);
+  CHECK(full.specular > 0);
+  CHECK(spec.specular == full.specular);
+  CHECK(spec.diffuse == 0.0);
+}
+
 TEST_CASE("disk facing the point on its axis: Id = pi R^2 / (R^2 + h^2)") {
   // The projected solid angle of a cap of half-angle alpha is pi sin^2 alpha.
   const auto sp = make_shading_point<double>({0, 0, 0}, {0, 0, 1}, {0, 0, 5}, 10.0);

@@ -114,7 +114,8 @@ class AdaptiveKronrod {
     }
   }
 
-  // Bisects the worst piece until the error target is met (see the header), then returns the sum.
+  // Bisects the worst piece (or evaluates it, if deferred) until the error target is met (see the
+  // header), then returns the sum.
   // integrand(c, t) and weight(c) are the f and weight that add() was given for curve c; floor is
   // an absolute error target for integrals that may be ~0 (0: relative only).
   template <class F, class W>

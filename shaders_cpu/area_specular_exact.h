@@ -53,6 +53,7 @@
 #include "adaptive_kronrod.h"
 #include "area_polygon.h"
 #include "area_specular_peak.h"
+#include "core/robust_math.h"
 
 namespace vlit {
 
@@ -137,7 +138,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   const R floor = tolerance * std::numeric_limits<R>::epsilon() * R(2 * M_PI) / (shininess + R(1));
   // Is <= c_max^m Omega <= c_max^m 2 pi (c <= c_max = cos(peak angle) on the light, whose solid
   // angle is at most 2 pi): below the floor, 0 is within it.
-  if (tail && bounded_tails && std::exp(shininess * std::log(std::cos(peak_angle))) * R(2 * M_PI) <= floor) return R(0);
+  if (tail && bounded_tails && phong_lobe_from_angle(peak_angle, shininess) * R(2 * M_PI) <= floor) return R(0);
 
   // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.
   std::array<EdgeIntegrand<R>, kMaxClipVertices> edge{};
@@ -194,7 +195,7 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
       const R sin2 = (R(1) - c) * (R(1) + c);
       if (!(sin2 > R(0))) return R(-1);  // no bound: evaluate the piece
       const R r2 = length_squared(a + e * std::clamp(tp, t0, t1));
-      return R(kDeferredCharge) * (t1 - t0) * std::exp((shininess + R(1)) * std::log(c)) / (r2 * sin2);
+      return R(kDeferredCharge) * (t1 - t0) * phong_power(c, shininess + R(1)) / (r2 * sin2);
     };
     quad.template add_graded<kExactMaxCuts>(edge[i], i, R(0), R(1), centers, widths, 2, w, bound);
   }

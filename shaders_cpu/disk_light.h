@@ -136,14 +136,16 @@ DiskSpecularBracket<T> disk_specular_bracket(const PreparedDiskLight<T>& light, 
 }
 
 // Shades with a prepared disk (the bake loop's form): no allocation, no polygon construction.
+// with_diffuse = false leaves the diffuse 0 (a caller that has it from the batch kernel).
 template <class T>
-Response<T> shade_disk(const PreparedDiskLight<T>& light, const ShadingPoint<T>& sp, const SpecularOptions& spec) {
+Response<T> shade_disk(const PreparedDiskLight<T>& light, const ShadingPoint<T>& sp, const SpecularOptions& spec,
+                       bool with_diffuse = true) {
   using R = AreaReal<T>;
   const Vec3<R> p = static_cast<Vec3<R>>(sp.p);
   const AreaView<R> view = make_area_view(light.inscribed, p);
   if (!view.lit) return {};
   Response<T> r;
-  r.diffuse = static_cast<T>(disk_diffuse_contour(view, light.radius, static_cast<Vec3<R>>(sp.n)));
+  if (with_diffuse) r.diffuse = static_cast<T>(disk_diffuse_contour(view, light.radius, static_cast<Vec3<R>>(sp.n)));
   if (spec.method == SpecularMethod::kExact) {
     r.specular = static_cast<T>(disk_specular_exact(view, light.radius, static_cast<Vec3<R>>(sp.n),
                                                     static_cast<Vec3<R>>(sp.rv), static_cast<R>(sp.shininess),

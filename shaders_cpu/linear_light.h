@@ -53,19 +53,22 @@ struct LinearDiffuseOptions {
 };
 
 // Response for unit intensity (Ip per unit of the parameter t in [0,1]) and kd = ks = 1.
+// with_diffuse = false leaves the diffuse 0 (a caller that has it from the batch kernel).
 template <class T>
 Response<T> shade_linear(const LinearLight<T>& light, const ShadingPoint<T>& sp, const SpecularOptions& spec,
-                         const LinearDiffuseOptions& diff = {}) {
+                         const LinearDiffuseOptions& diff = {}, bool with_diffuse = true) {
   using A = LinearCompute<T>;
   const LinearFrame<A> fr = make_linear_frame(light, sp);
   Response<T> r;
   if (fr.empty) return r;
   const double n = double(light.falloff);
-  const bool integer_n = (n == 0 || n == 1 || n == 2 || n == 3);
-  const double d = (integer_n && !diff.force_quadrature)
-                       ? double(linear_diffuse_closed_normalised(fr, int(n)))
-                       : double(linear_diffuse_quadrature_normalised(fr, A(n), A(diff.quadrature_tolerance)));
-  r.diffuse = linear_saturate<T>(d * linear_scale_factor(fr.scale, n));
+  if (with_diffuse) {
+    const bool integer_n = (n == 0 || n == 1 || n == 2 || n == 3);
+    const double d = (integer_n && !diff.force_quadrature)
+                         ? double(linear_diffuse_closed_normalised(fr, int(n)))
+                         : double(linear_diffuse_quadrature_normalised(fr, A(n), A(diff.quadrature_tolerance)));
+    r.diffuse = linear_saturate<T>(d * linear_scale_factor(fr.scale, n));
+  }
   const A m = A(sp.shininess);
   switch (spec.method) {
     case SpecularMethod::kNone: break;

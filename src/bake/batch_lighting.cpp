@@ -29,6 +29,8 @@ namespace {
 void light_block(const ScenePlan& plan, const std::vector<int>& lights, const BatchPoints& pts,
                  const BatchOutput& out, const BatchSpecularOutput& spec_out, const ShadingPoint<double>* points,
                  long begin, long end, Vec3d* diffuse, Vec3d* specular) {
+  ShadeOptions specular_only = plan.shade;  // for lanes whose diffuse the batch kernel has
+  specular_only.with_diffuse = false;
   for (int li : lights) {
     const PreparedLight<double>& light = plan.lights[li];
     const BatchChoice& choice = plan.batch_of_light[li];
@@ -56,8 +58,6 @@ void light_block(const ScenePlan& plan, const std::vector<int>& lights, const Ba
       continue;
     }
     // The specular by the scalar double kernel; its diffuse only where the batch lane was stiff.
-    ShadeOptions specular_only = plan.shade;
-    specular_only.with_diffuse = false;
     for (long v = begin; v < end; ++v) {
       const Response<double> r = shade(light, points[v], out.stiff[v] ? plan.shade : specular_only);
       diffuse[v] += light.radiance * (out.stiff[v] ? r.diffuse : static_cast<double>(out.diffuse[v]));

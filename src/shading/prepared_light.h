@@ -28,7 +28,8 @@ enum class AreaShadowMethod { kSilhouette, kTriangleCuts };
 struct ShadeOptions {
   bool with_specular = true;
   // false: the caller has the diffuse already (a batch kernel's) and reads only the specular;
-  // area lights then skip their diffuse (Response::diffuse is 0), the other models compute it.
+  // linear, area and disk lights then skip their diffuse (Response::diffuse is 0); point, spot and
+  // directional lights compute it (a few operations, shared with their specular).
   bool with_diffuse = true;
   SpecularOptions specular;
   LinearDiffuseOptions linear;
@@ -119,9 +120,9 @@ Response<T> shade_kernel(const K& k, const ShadingPoint<T>& sp, const ShadeOptio
   else {
     SpecularOptions s = options.specular;
     if (!spec) s.method = SpecularMethod::kNone;
-    if constexpr (std::is_same_v<K, LinearLight<T>>) return shade_linear(k, sp, s, options.linear);
+    if constexpr (std::is_same_v<K, LinearLight<T>>) return shade_linear(k, sp, s, options.linear, options.with_diffuse);
     else if constexpr (std::is_same_v<K, PreparedAreaLight<T>>) return shade_area(k, sp, s, options.with_diffuse);
-    else return shade_disk(k, sp, s);
+    else return shade_disk(k, sp, s, options.with_diffuse);
   }
 }
 

@@ -53,20 +53,31 @@ TEST_CASE("square panel centred above the point: the closed form of a parallel r
   }
 }
 
-TEST_CASE("with_diffuse = false: a panel's specular is unchanged and its diffuse skipped (0)") {
+TEST_CASE("with_diffuse = false: a tube's, a panel's and a disk's specular unchanged, their diffuse skipped (0)") {
   // The bake's scalar specular path asks for the specular only where the batch kernel has the diffuse.
   const auto sp = make_shading_point<double>({0.2, 0.1, 0}, {0, 0, 1}, {0.5, 0, 5}, 40.0);
-  LightSource l;
-  l.type = LightType::kArea;
-  l.polygon = {{-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}};
-  const PreparedLight<double> light = prepare_light<double>(l);
-  ShadeOptions both, specular_only;
-  specular_only.with_diffuse = false;
-  const Response<double> full = shade(light, sp, both), spec = shade(light, sp, specular_only);
-  CHECK(full.diffuse > 0);
-  CHECK(full.specular > 0);
-  CHECK(spec.specular == full.specular);
-  CHECK(spec.diffuse == 0.0);
+  LightSource tube, panel, disk;
+  tube.type = LightType::kLinear;
+  tube.from = {-1, 0.2, 1};
+  tube.to = {1, 0.3, 1};
+  tube.falloff = 1.5;  // the diffuse by quadrature
+  panel.type = LightType::kArea;
+  panel.polygon = {{-1, -1, 1}, {-1, 1, 1}, {1, 1, 1}, {1, -1, 1}};
+  disk.type = LightType::kDisk;
+  disk.center = {0.3, 0, 1};
+  disk.normal = {0, 0, -1};
+  disk.radius = 0.5;
+  for (const LightSource& l : {tube, panel, disk}) {
+    const PreparedLight<double> light = prepare_light<double>(l);
+    ShadeOptions both, specular_only;
+    specular_only.with_diffuse = false;
+    const Response<double> full = shade(light, sp, both), spec = shade(light, sp, specular_only);
+    INFO("light type ", int(l.type));
+    CHECK(full.diffuse > 0);
+    CHECK(full.specular > 0);
+    CHECK(spec.specular == full.specular);
+    CHECK(spec.diffuse == 0.0);
+  }
 }
 
 TEST_CASE("disk facing the point on its axis: Id = pi R^2 / (R^2 + h^2)") {

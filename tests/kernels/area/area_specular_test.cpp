@@ -70,6 +70,25 @@ RefPeak reference_peak(const std::vector<Vec3d>& poly_d, const ShadingPoint<doub
   return best;
 }
 
+// A random convex polygon about the origin (size 1e-2..1e2) and a point P in front of it, its
+// normal roughly toward the polygon: the draws of the random exact-specular tests, in their order.
+struct RandomPolygonCase {
+  std::vector<Vec3d> poly;
+  Vec3d p, n;
+  double size;
+};
+RandomPolygonCase random_polygon_case(Rng& rng) {
+  RandomPolygonCase c;
+  c.size = rng.log_uniform(1e-2, 1e2);
+  const Vec3d nl = rng.unit();
+  c.poly = random_convex_polygon(rng, {0, 0, 0}, nl, c.size, rng.log_uniform(0.2, 1), 6);
+  Vec3d dir = rng.unit();
+  if (dot(dir, nl) < 0.1) dir = normalize(dir + nl * (0.2 - dot(dir, nl)));
+  c.p = dir * (c.size * rng.log_uniform(0.3, 30));
+  c.n = normalize(-c.p + rng.unit() * (c.size * rng.uniform(0, 2)));
+  return c;
+}
+
 }  // namespace
 
 TEST_CASE("area specular peak: random configurations vs dense search + sidebar refinement") {
@@ -196,15 +215,8 @@ TEST_CASE("area specular exact: random configurations vs area quadrature") {
   int cases = 0;
   for (uint64_t seed = 1; seed <= 40; ++seed) {
     Rng rng(seed);
-    const double size = rng.log_uniform(1e-2, 1e2);
-    const Vec3d nl = rng.unit();
-    const Vec3d center{0, 0, 0};
-    const auto poly = random_convex_polygon(rng, center, nl, size, rng.log_uniform(0.2, 1), 6);
-    Vec3d dir = rng.unit();
-    if (dot(dir, nl) < 0.1) dir = normalize(dir + nl * (0.2 - dot(dir, nl)));
-    const Vec3d p = center + dir * (size * rng.log_uniform(0.3, 30));
-    const Vec3d n = normalize(center - p + rng.unit() * (size * rng.uniform(0, 2)));
-    const Vec3d rv = normalize(center + rng.unit() * (size * rng.uniform(0, 1.5)) - p);
+    const auto [poly, p, n, size] = random_polygon_case(rng);
+    const Vec3d rv = normalize(rng.unit() * (size * rng.uniform(0, 1.5)) - p);
     const ShadingPoint<double> sp{p, n, rv, std::round(rng.log_uniform(1, 1e3))};
     const Response<double> k = shade_area(light_of(poly), sp, spec_options(SpecularMethod::kExact, 1e-9));
     const double ref = reference_specular({poly}, sp);
@@ -380,13 +392,7 @@ TEST_CASE("area specular exact: lobe tails, deferred pieces vs every piece evalu
   double worst_random = 0;  // largest difference over the allowed one
   for (uint64_t seed = 1; seed <= 200; ++seed) {
     Rng rng(seed);
-    const double size = rng.log_uniform(1e-2, 1e2);
-    const Vec3d nl = rng.unit();
-    const auto random_poly = random_convex_polygon(rng, {0, 0, 0}, nl, size, rng.log_uniform(0.2, 1), 6);
-    Vec3d dir = rng.unit();
-    if (dot(dir, nl) < 0.1) dir = normalize(dir + nl * (0.2 - dot(dir, nl)));
-    const Vec3d p = dir * (size * rng.log_uniform(0.3, 30));
-    const Vec3d n = normalize(-p + rng.unit() * (size * rng.uniform(0, 2)));
+    const auto [random_poly, p, n, size] = random_polygon_case(rng);
     const Vec3d rv = normalize(rng.unit() * (size * rng.uniform(1.2, 3)) - p);
     const double m = std::round(rng.log_uniform(1, 1e3));
     const PreparedAreaLight<double> light = prepare_area_light(light_of(random_poly));

@@ -22,6 +22,28 @@ T difference_of_products(T a, T b, T c, T d) {
   return dop + err;
 }
 
+// Twice the signed area of the triangle (a, b, c): positive when c lies left of a -> b. The
+// coordinate differences are rounded; their 2x2 determinant is not (difference_of_products), so
+// the sign is that of the exact determinant of the rounded differences.
+inline double orient2(double ax, double ay, double bx, double by, double cx, double cy) {
+  return difference_of_products(bx - ax, cy - ay, by - ay, cx - ax);
+}
+
+// The sign of orient2 (-1, 0, +1), from plain products where their rounding cannot change it
+// (the determinant farther from 0 than 3 eps times the products' sum, a bound of that rounding
+// that also holds when the compiler fuses a product into the subtraction, plus a floor for
+// underflow), otherwise from orient2 itself. Always orient2's sign; cheaper when the determinant
+// is not close to 0.
+inline int orient2_sign(double ax, double ay, double bx, double by, double cx, double cy) {
+  const double p = (bx - ax) * (cy - ay), q = (by - ay) * (cx - ax);
+  const double det = p - q;
+  const double bound = 3.4e-16 * (std::abs(p) + std::abs(q)) + 1e-300;
+  if (det > bound) return 1;
+  if (det < -bound) return -1;
+  const double o = orient2(ax, ay, bx, by, cx, cy);
+  return (o > 0) - (o < 0);
+}
+
 // Angle between two vectors (need not be unit), accurate at 0 and pi, unlike acos(dot):
 // atan2(|a x b|, a . b).
 template <class T>

@@ -23,10 +23,6 @@ struct Frame {
   AreaSlab slab;
 };
 
-double orient2(double ax, double ay, double bx, double by, double cx, double cy) {
-  return difference_of_products(bx - ax, cy - ay, by - ay, cx - ax);
-}
-
 struct ClippedPoint {
   Vec3d x;
   int side = -1;  // the pyramid side that produced it, or -1
@@ -402,44 +398,55 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     }
   }
 
-  // Events: R's bottom and top, every endpoint, every proper crossing, every left step.
-  std::vector<double>& events = s.events;
-  events.clear();
-  events.push_back(f.rect.y0);
-  events.push_back(f.rect.y1);
-  auto add_event = [&](double v) { events.push_back(std::min(std::max(v, f.rect.y0), f.rect.y1)); };
+  // Events: R's bottom and top, every endpoint, every proper crossing, every left step, each
+  // clamped to R. The segments' lower ends come sorted with `order`; the other events are sorted
+  // on their own and merged with them.
+  auto clamped = [&](double v) { return std::min(std::max(v, f.rect.y0), f.rect.y1); };
+  std::vector<std::pair<double, int>>& by_start = s.sorted;
+  by_start.clear();
+  for (std::size_t i = 0; i < seg.size(); ++i)
+    if (seg[i].v1 > seg[i].v0) by_start.push_back({seg[i].v0, static_cast<int>(i)});
+  std::sort(by_start.begin(), by_start.end());  // by v0, ties by index
   std::vector<int>& order = s.order;
   order.clear();
-  for (std::size_t i = 0; i < seg.size(); ++i)
-    if (seg[i].v1 > seg[i].v0) {
-      order.push_back(static_cast<int>(i));
-      add_event(seg[i].v0);
-      add_event(seg[i].v1);
-    }
+  std::vector<double>& starts = s.starts;
+  starts.clear();
+  std::vector<double>& other_events = s.other_events;
+  other_events.assign({f.rect.y0, f.rect.y1});
+  auto add_event = [&](double v) { other_events.push_back(clamped(v)); };
+  for (const auto& [v0, i] : by_start) {
+    order.push_back(i);
+    starts.push_back(clamped(v0));
+    add_event(seg[i].v1);
+  }
   for (const auto& [v, w] : s.left_steps) add_event(v);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return seg[a].v0 < seg[b].v0 || (seg[a].v0 == seg[b].v0 && a < b); });
   {
-    std::vector<int>& active = s.active;
+    // The segments whose v-range is still open, with what the cheap tests read.
+    std::vector<AreaSilhouetteScratch::Active>& active = s.active;
     active.clear();
     for (int i : order) {
       const SilhouetteSegment& a = seg[i];
+      const double a_lo = std::min(a.u0, a.u1), a_hi = std::max(a.u0, a.u1);
       std::size_t kept = 0;
-      for (int j : active) {
-        if (seg[j].v1 <= a.v0) continue;
-        active[kept++] = j;
-        const SilhouetteSegment& b = seg[j];
-        if (std::max(a.u0, a.u1) < std::min(b.u0, b.u1) || std::max(b.u0, b.u1) < std::min(a.u0, a.u1)) continue;
+      for (const AreaSilhouetteScratch::Active& entry : active) {
+        if (entry.v1 <= a.v0) continue;
+        active[kept++] = entry;
+        if (a_hi < entry.u_lo || entry.u_hi < a_lo) continue;
+        const SilhouetteSegment& b = seg[entry.index];
+        // A proper crossing: b's ends strictly on both sides of a, and a's of b.
+        if (orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0) * orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1) >= 0) continue;
+        if (orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u0, a.v0) * orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u1, a.v1) >= 0) continue;
         const double o1 = orient2(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0), o2 = orient2(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1);
-        if (!((o1 < 0 && o2 > 0) || (o1 > 0 && o2 < 0))) continue;
-        const double o3 = orient2(b.u0, b.v0, b.u1, b.v1, a.u0, a.v0), o4 = orient2(b.u0, b.v0, b.u1, b.v1, a.u1, a.v1);
-        if (!((o3 < 0 && o4 > 0) || (o3 > 0 && o4 < 0))) continue;
         add_event(b.v0 + (b.v1 - b.v0) * (o1 / (o1 - o2)));
       }
       active.resize(kept);
-      active.push_back(i);
+      active.push_back({a.v1, a_lo, a_hi, i});
     }
   }
-  std::sort(events.begin(), events.end());
+  std::sort(other_events.begin(), other_events.end());
+  std::vector<double>& events = s.events;
+  events.resize(starts.size() + other_events.size());
+  std::merge(starts.begin(), starts.end(), other_events.begin(), other_events.end(), events.begin());
   events.erase(std::unique(events.begin(), events.end()), events.end());
   const int slabs = static_cast<int>(events.size()) - 1;
 

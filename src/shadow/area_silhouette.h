@@ -60,9 +60,11 @@ struct AreaSilhouetteScratch {
   std::vector<std::int8_t> slot_facing;   // per slot of a cluster (silhouette_cluster.h) from P, or 2: not yet
   std::uint32_t stamp = 0;
   std::vector<SilhouetteSegment> segments;
-  std::vector<double> events;
+  std::vector<double> events, starts, other_events;
   std::vector<std::pair<double, int>> left_steps;
-  std::vector<int> order, active, slab_first, slab_segments, step, prefix, by_height;
+  struct Active { double v1, u_lo, u_hi; int index; };  // a segment the sweep's crossing search holds
+  std::vector<Active> active;
+  std::vector<int> order, slab_first, slab_segments, step, prefix, by_height;
   std::vector<std::pair<double, int>> sorted;
   std::vector<std::pair<double, double>> light_uv;
   struct Open { int a, b; double v_start; };  // a trapezoid still growing upward

@@ -59,6 +59,55 @@ TEST_CASE("difference_of_products keeps the digits that a*b - c*d loses") {
     }
 }
 
+int sign_of(double x) { return (x > 0) - (x < 0); }
+
+TEST_CASE("orient2_sign is orient2's sign, also where plain products lose it") {
+  // Near-collinear points: a = (0.5, 0.5) moved by i, j units in the last place, on the line
+  // through b = (12, 12) and c = (24, 24). Plain products round to equal values at some of them
+  // where the determinant is not 0 (rounding is monotone, so they give 0, not the opposite sign);
+  // orient2_sign must then take orient2's answer.
+  const double ulp = std::ldexp(1.0, -53);
+  int naive_lost = 0, checked = 0;
+  for (int i = 0; i < 256; ++i)
+    for (int j = 0; j < 256; ++j) {
+      const double ax = 0.5 + i * ulp, ay = 0.5 + j * ulp;
+      const int s = sign_of(orient2(ax, ay, 12, 12, 24, 24));
+      volatile double p = (12 - ax) * (24 - ay), q = (12 - ay) * (24 - ax);  // no FMA contraction
+      naive_lost += sign_of(p - q) != s;
+      CAPTURE(i);
+      CAPTURE(j);
+      REQUIRE(orient2_sign(ax, ay, 12, 12, 24, 24) == s);
+      ++checked;
+    }
+  CHECK(checked == 65536);
+  CHECK(naive_lost > 1000);  // so the fallback is exercised, not only the fast path
+
+  // Exactly collinear (0), shared endpoints (0), ordinary (clear sign), and tiny and huge scales
+  // where the products underflow or come near overflow.
+  CHECK(orient2_sign(0, 0, 1, 1, 3, 3) == 0);
+  CHECK(orient2_sign(0.1, 0.7, 0.3, 0.2, 0.1, 0.7) == 0);
+  CHECK(orient2_sign(0.1, 0.7, 0.3, 0.2, 0.3, 0.2) == 0);
+  CHECK(orient2_sign(0, 0, 1, 0, 0, 1) == 1);
+  CHECK(orient2_sign(0, 0, 1, 0, 0, -1) == -1);
+  for (double scale : {1e-160, 1e-300, 1e150}) {
+    CAPTURE(scale);
+    CHECK(orient2_sign(0, 0, scale, 0, 0, scale) == sign_of(orient2(0, 0, scale, 0, 0, scale)));
+    CHECK(orient2_sign(0, 0, scale, scale, 2 * scale, 2 * scale + scale * 1e-15) ==
+          sign_of(orient2(0, 0, scale, scale, 2 * scale, 2 * scale + scale * 1e-15)));
+  }
+  // Random points, some snapped to a coarse grid so that many are exactly collinear.
+  unsigned state = 12345;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / 16777216.0;
+  };
+  for (int k = 0; k < 20000; ++k) {
+    double x[6];
+    for (double& v : x) v = k % 2 ? std::round(next() * 8) / 8 : next() * 2 - 1;
+    CHECK(orient2_sign(x[0], x[1], x[2], x[3], x[4], x[5]) == sign_of(orient2(x[0], x[1], x[2], x[3], x[4], x[5])));
+  }
+}
+
 TEST_CASE("angle_between is accurate near 0 and pi where acos(dot) is not") {
   const double tiny = 1e-10;
   const Vec3d a{1, 0, 0};

@@ -285,7 +285,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
   if (clustered && cluster->leaves.size() <= SilhouetteCluster::kFlatLeaves) {
-    occluders.leaves_reached(cluster->leaves, volume, slab, 2, p, s.leaves);
+    occluders.leaves_reached(cluster->leaves, volume, s.leaves);
   } else if (clustered) {
     // P's own search, kept to the cluster's leaves: a leaf the cluster's search did not reach lies
     // outside the cluster's hull (so outside P's volume) or faces P uniformly.

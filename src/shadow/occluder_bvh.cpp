@@ -435,10 +435,8 @@ void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace*
 }
 
 void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
-                                 const HalfSpace* inside, int inside_count, const Vec3d& p,
                                  std::vector<std::uint32_t>& out) const {
   out.clear();
-  const UnitHalfSpaces slab(inside, inside_count);
   const Aabb query = padded(volume.box);
   const UnitPlanes planes(volume.planes);  // as visit_volume
   for (std::uint32_t i = 0; i < leaves.size(); ++i) {
@@ -447,9 +445,7 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
     bool out_of_volume = false;
     for (int k = 0; k < planes.count && !out_of_volume; ++k)
       out_of_volume = outside(leaf, planes.plane[k].h, planes.plane[k].origin_margin);
-    if (out_of_volume) continue;
-    if (holds(*this, slab, leaf) && faces_uniformly(leaf, p, 0)) continue;
-    out.push_back(i);
+    if (!out_of_volume) out.push_back(i);
   }
 }
 

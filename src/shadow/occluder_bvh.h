@@ -66,11 +66,13 @@ class OccluderBvh {
   void silhouette_leaves(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
                          double p_radius, std::vector<std::uint32_t>& leaves) const;
 
-  // Of the given leaves (a cluster's, from silhouette_leaves), the positions i of those the search
-  // from p over `volume` reaches: leaves[i] is not wholly outside one of the volume's planes or
-  // box, and does not both lie inside `inside` and face p uniformly. Ascending.
-  void leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume, const HalfSpace* inside,
-                      int inside_count, const Vec3d& p, std::vector<std::uint32_t>& out) const;
+  // Of the given leaves (a cluster's, from silhouette_leaves), the positions i of those not wholly
+  // outside one of `volume`'s planes or its box. Ascending. Unlike the searches, it does not ask
+  // whether a leaf faces the vertex uniformly: a cluster lists only leaves with edges of non-zero
+  // weight over the cluster, of which few pass that test from one of its vertices, and reading a
+  // leaf that does costs little (its edges weigh 0 from there, and it leaves no chord).
+  void leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
+                      std::vector<std::uint32_t>& out) const;
 
   // The triangles of a leaf node: indices [first, second) (triangles are stored in leaf order).
   std::pair<std::uint32_t, std::uint32_t> leaf_triangles(std::uint32_t node) const {

@@ -243,8 +243,8 @@ bool enters_convex(const SilhouetteSegment& g, const std::vector<std::pair<doubl
     const auto& [bx, by] = uv[(i + 1) % n];
     const double ex = bx - ax, ey = by - ay;
     const double margin = tolerance * std::sqrt(ex * ex + ey * ey);
-    const double f0 = turn * difference_of_products(ex, g.v0 - ay, ey, g.u0 - ax) - margin;
-    const double f1 = turn * difference_of_products(ex, g.v1 - ay, ey, g.u1 - ax) - margin;
+    const double f0 = turn * orient2(ax, ay, bx, by, g.u0, g.v0) - margin;
+    const double f1 = turn * orient2(ax, ay, bx, by, g.u1, g.v1) - margin;
     if (f0 <= 0 && f1 <= 0) return false;
     if (f0 < 0) t0 = std::max(t0, f0 / (f0 - f1));
     if (f1 < 0) t1 = std::min(t1, f0 / (f0 - f1));
@@ -402,7 +402,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   // clamped to R. The segments' lower ends come sorted with `order`; the other events are sorted
   // on their own and merged with them.
   auto clamped = [&](double v) { return std::min(std::max(v, f.rect.y0), f.rect.y1); };
-  std::vector<std::pair<double, int>>& by_start = s.sorted;
+  std::vector<std::pair<double, int>>& by_start = s.by_start;
   by_start.clear();
   for (std::size_t i = 0; i < seg.size(); ++i)
     if (seg[i].v1 > seg[i].v0) by_start.push_back({seg[i].v0, static_cast<int>(i)});

@@ -65,7 +65,8 @@ struct AreaSilhouetteScratch {
   struct Active { double v1, u_lo, u_hi; int index; };  // a segment the sweep's crossing search holds
   std::vector<Active> active;
   std::vector<int> order, slab_first, slab_segments, step, prefix, by_height;
-  std::vector<std::pair<double, int>> sorted;
+  std::vector<std::pair<double, int>> by_start;  // (v0, segment), for the events and the crossing search
+  std::vector<std::pair<double, int>> sorted;    // a slab's (u, segment); then the reference ray's gaps
   std::vector<std::pair<double, double>> light_uv;
   struct Open { int a, b; double v_start; };  // a trapezoid still growing upward
   std::vector<Open> open, now;

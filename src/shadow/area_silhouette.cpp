@@ -81,11 +81,11 @@ Vec3d crossing(const Vec3d& x, const Vec3d& y, const HalfSpace& h) {
 
 // +1: the triangle faces P (its projection is counter-clockwise), -1: it faces away, 0: it hides
 // nothing (is_occluder, or it touches P).
-int facing_of(const OccluderTriangles& triangles, std::uint32_t t, const Vec3d& p, AreaSilhouetteScratch& s) {
+int facing_of(const OccluderBvh& occluders, std::uint32_t t, const Vec3d& p, AreaSilhouetteScratch& s) {
   if (s.facing_stamp[t] == s.stamp) return s.facing[t];
   bool front = false;
   int f = 0;
-  if (!touches(triangles.corners[t], p) && is_occluder(triangles, t, p, &front)) f = front ? 1 : -1;
+  if (!touches(occluders.triangles().corners[t], p) && is_occluder(occluders, t, p, &front)) f = front ? 1 : -1;
   s.facing_stamp[t] = s.stamp;
   s.facing[t] = static_cast<std::int8_t>(f);
   return f;
@@ -112,7 +112,7 @@ int edge_weight(const OccluderBvh& occluders, std::uint32_t e, const Vec3d& p, A
   int weight = 0;
   for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
     const std::uint32_t code = edges.incident[k];
-    weight += facing_of(occluders.triangles(), code / 3, p, s) * edges.direction_of[code / 3][code % 3];
+    weight += facing_of(occluders, code / 3, p, s) * edges.direction_of[code / 3][code % 3];
   }
   return weight;
 }
@@ -177,10 +177,11 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const Silh
     }
     return;
   }
-  for (std::uint32_t t : s.candidates) {
+  for (std::size_t i = 0; i < s.candidates.size(); ++i) {
     // A candidate that hides nothing itself (it touches P, is a culled back face, a needle) still
     // weighs its edges: its neighbours may lie in subtrees the search skipped.
-    const int ft = facing_of(triangles, t, f.p, s);
+    const std::uint32_t t = s.candidates[i];
+    const int ft = facing_of(occluders, t, f.p, s);
     for (int j = 0; j < 3; ++j) {
       const std::uint32_t e = edges.edge_of[t][j];
       if (s.edge_stamp[e] == s.stamp) continue;
@@ -188,7 +189,8 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const Silh
       const int weight = edge_weight(occluders, e, f.p, s);
       if (weight != 0) add_edge(f, edges, e, weight, s);
     }
-    if (ft != 0) add_chords(f, triangles.corners[t], ft, s);
+    // A candidate whose leaf the search found inside both planes of the slab has no chord.
+    if (ft != 0 && !s.candidate_in_slab[i]) add_chords(f, triangles.corners[t], ft, s);
   }
 }
 
@@ -222,7 +224,7 @@ int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaS
     if (margin < -kRayAmbiguity) continue;
     // A triangle that hides nothing from P (facing_of 0) is not counted, and is not ambiguous:
     // asked only of the triangles the ray meets.
-    if (facing_of(triangles, t, f.p, s) == 0) continue;
+    if (facing_of(occluders, t, f.p, s) == 0) continue;
     const Vec3d hit = f.p + dir * t_hit;
     const double d0 = f.slab.beyond_light.signed_distance(hit), d1 = f.slab.before_p.signed_distance(hit);
     if (d0 < -plane_tol || d1 < -plane_tol) continue;
@@ -294,7 +296,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     for (std::uint32_t node : s.candidates)
       if (cluster->node_stamp[node] == cluster->stamp) s.leaves.push_back(cluster->leaf_position[node]);
   } else {
-    occluders.silhouette_candidates(volume, slab, 2, p, s.candidates);
+    occluders.silhouette_candidates(volume, slab, 2, p, s.candidates, s.candidate_in_slab);
   }
   // The pyramid's sides, inward, in the order bottom, right, top, left (project() relies on it).
   const Vec3d corner[4] = {f.center + f.u * f.rect.x0 + f.v * f.rect.y0, f.center + f.u * f.rect.x1 + f.v * f.rect.y0,

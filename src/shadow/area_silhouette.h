@@ -53,6 +53,7 @@ struct SilhouetteSegment {
 
 struct AreaSilhouetteScratch {
   std::vector<std::uint32_t> candidates, ray_candidates;
+  std::vector<std::uint8_t> candidate_in_slab;  // per candidate: its leaf lies inside the slab (no chords)
   std::vector<std::uint32_t> leaves;  // positions in a cluster's leaves that P reaches
   std::vector<std::uint32_t> edge_stamp;  // per occluder edge: the query that last weighed it
   std::vector<std::int8_t> facing;        // per occluder triangle, valid when facing_stamp matches

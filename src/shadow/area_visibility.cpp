@@ -29,15 +29,13 @@ Rect2 light_rectangle(const AreaView<double>& view, const ClipPolygon<double>& h
   return r;
 }
 
-bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const Vec3d& p, bool* front) {
-  if (culled_back_face(triangles, index, p)) return false;
-  const auto& tri = triangles.corners[index];
-  const Vec3d n_tri = cross(tri[1] - tri[0], tri[2] - tri[0]);
-  const double longest = std::max({length_squared(tri[1] - tri[0]), length_squared(tri[2] - tri[1]),
-                                   length_squared(tri[0] - tri[2])});
-  const double n_length = length(n_tri);
-  if (!(n_length > kSliver * longest)) return false;  // a needle: no area, and no reliable plane
-  const int facing = facing_from_plane(n_tri, n_length, tri[0], p);
+bool is_occluder(const OccluderBvh& occluders, std::uint32_t index, const Vec3d& p, bool* front) {
+  const OccluderTriangles& triangles = occluders.triangles();
+  const OccluderBvh::TrianglePlane& plane = occluders.plane(index);
+  if (culled_back_face(triangles, index, p, plane.normal)) return false;
+  // A needle: no area, and no reliable plane.
+  if (!(plane.normal_length > kSliver * plane.longest_squared)) return false;
+  const int facing = facing_from_plane(plane.normal, plane.normal_length, triangles.corners[index][0], p);
   if (facing == 0) return false;  // edge-on or zero area
   if (front) *front = facing > 0;
   return true;
@@ -143,7 +141,7 @@ AreaVisibility visible_area_pieces(const PreparedAreaLight<double>& light, const
   cones.clear();
   for (std::uint32_t index : scratch.candidates) {
     bool front = false;
-    if (!is_occluder(occluders.triangles(), index, p, &front)) continue;
+    if (!is_occluder(occluders, index, p, &front)) continue;
     const auto& tri = occluders.triangles().corners[index];
     const double sigma = front ? -1.0 : 1.0;
     const SmallPolygon part = clip_triangle(tri, slab_planes);

@@ -131,7 +131,7 @@ Rect2 light_rectangle(const AreaView<double>& view, const ClipPolygon<double>& h
 // hence any crossing with it, is rounding noise.
 inline constexpr double kEdgeOn = 1e-12;
 inline constexpr double kSliver = 1e-10;
-bool is_occluder(const OccluderTriangles& triangles, std::uint32_t index, const Vec3d& p, bool* front);
+bool is_occluder(const OccluderBvh& occluders, std::uint32_t index, const Vec3d& p, bool* front);
 
 // is_occluder's test of the plane alone, for a triangle that is not a needle and not culled from
 // P: n = cross(c1 - c0, c2 - c0), n_length = length(n). +1: it faces P, -1: it faces away, 0: P

@@ -110,22 +110,50 @@ struct UnitPlanes {
   }
 };
 
+// Bits of the planes proven to hold a node during a walk down the tree (OccluderBvh::visit_volume):
+// bit k for the volume's plane k (k < 16), bit kSlabBit + k for the plane k of a search's `inside`.
+// A node's triangles lie in its box, and a child's box in its parent's, so a plane that holds a
+// node with the tests' margin holds every triangle below it with that margin: the child is not
+// tested again.
+constexpr int kSlabBit = 16;
+
 // The `inside` planes of the silhouette searches with unit normals; more than 4 are never held
-// (no subtree is skipped as uniform: conservative).
+// (no subtree is skipped as uniform: conservative). A plane that is also one of the volume's (the
+// same normal and origin: the area searches pass the slab's two planes, which bound the volume too)
+// takes that plane's bit, which visit_volume has already decided for the node.
 struct UnitHalfSpaces {
   UnitPlane h[4];
+  std::uint32_t bit[4] = {};
+  bool decided[4] = {};  // bit[k] is a volume plane's
+  std::uint32_t bits = 0;  // every plane's bit
   int count = 0;
   bool too_many = false;
-  UnitHalfSpaces(const HalfSpace* planes, int n) : too_many(n > 4) {
-    for (int k = 0; k < n && k < 4; ++k) h[count++] = unit_plane(planes[k]);
+  UnitHalfSpaces(const HalfSpace* planes, int n, const std::vector<HalfSpace>& volume_planes) : too_many(n > 4) {
+    for (int k = 0; k < n && k < 4; ++k) {
+      h[count] = unit_plane(planes[k]);
+      bit[count] = 1u << (kSlabBit + k);
+      for (std::size_t j = 0; j < volume_planes.size() && j < kSlabBit; ++j) {
+        const HalfSpace& v = volume_planes[j];
+        if (v.normal == planes[k].normal && v.origin == planes[k].origin) {
+          bit[count] = 1u << j;
+          decided[count] = true;
+          break;
+        }
+      }
+      bits |= bit[count++];
+    }
   }
 };
 
-// The node lies inside every half-space of `slab`.
-bool holds(const OccluderBvh& bvh, const UnitHalfSpaces& slab, std::uint32_t node) {
+// The node lies inside every half-space of `slab`; the planes proven on the way are added to `held`.
+bool holds(const OccluderBvh& bvh, const UnitHalfSpaces& slab, std::uint32_t node, std::uint32_t& held) {
   if (slab.too_many) return false;
-  for (int k = 0; k < slab.count; ++k)
-    if (!bvh.inside(node, slab.h[k].h, slab.h[k].origin_margin)) return false;
+  if ((held & slab.bits) == slab.bits) return true;
+  for (int k = 0; k < slab.count; ++k) {
+    if (held & slab.bit[k]) continue;
+    if (slab.decided[k] || !bvh.inside(node, slab.h[k].h, slab.h[k].origin_margin)) return false;
+    held |= slab.bit[k];
+  }
   return true;
 }
 
@@ -165,6 +193,15 @@ OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
   triangles_ = std::move(sorted);
   boxes_ = std::move(boxes);
   edges_ = edges_of(triangles_);
+  planes_.resize(n);
+  for (std::size_t t = 0; t < n; ++t) {
+    const auto& c = triangles_.corners[t];
+    TrianglePlane& plane = planes_[t];
+    plane.normal = cross(c[1] - c[0], c[2] - c[0]);
+    plane.normal_length = length(plane.normal);
+    plane.longest_squared =
+        std::max({length_squared(c[1] - c[0]), length_squared(c[2] - c[1]), length_squared(c[0] - c[2])});
+  }
   if (brute_force_) nodes_.clear();
   else if (n > 0) build_cones();
 }
@@ -207,14 +244,12 @@ void OccluderBvh::build_cones() {
   std::vector<Vec3d> unit(n);
   std::vector<bool> degenerate(n);
   for (std::size_t t = 0; t < n; ++t) {
-    const auto& c = triangles_.corners[t];
-    const Vec3d normal = cross(c[1] - c[0], c[2] - c[0]);
-    const double len = length(normal);
-    const double longest = std::max({length_squared(c[1] - c[0]), length_squared(c[2] - c[1]), length_squared(c[0] - c[2])});
+    const TrianglePlane& plane = planes_[t];
+    const double len = plane.normal_length;
     // Needles (is_occluder's kSliver, area_visibility.h) hide nothing: their neighbours' edges
     // may be silhouettes whatever the facing, so no cone holding them is bounded.
-    degenerate[t] = !(len > 1e-10 * longest) || !std::isfinite(len);
-    unit[t] = degenerate[t] ? Vec3d{0, 0, 1} : normal / len;
+    degenerate[t] = !(len > 1e-10 * plane.longest_squared) || !std::isfinite(len);
+    unit[t] = degenerate[t] ? Vec3d{0, 0, 1} : plane.normal / len;
   }
   // The cone of a triangle and its edge neighbours, then of the subtrees, bottom-up (children
   // are stored after their parent).
@@ -295,6 +330,15 @@ bool OccluderBvh::outside(std::uint32_t node, const HalfSpace& h, double origin_
   return box_outside_unit(nodes_[node].box, h);
 }
 
+int OccluderBvh::side_of(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
+  const Ball& ball = balls_[node];
+  const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + origin_margin;
+  if (d + ball.radius < -margin) return -1;
+  if (d - ball.radius > margin) return 1;
+  if (box_outside_unit(nodes_[node].box, h)) return -1;
+  return box_inside_unit(nodes_[node].box, h) ? 1 : 0;
+}
+
 bool OccluderBvh::inside(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
   const Ball& ball = balls_[node];
   const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + origin_margin;
@@ -306,29 +350,25 @@ bool OccluderBvh::inside(std::uint32_t node, const HalfSpace& h, double origin_m
 // Every triangle of the subtree and every edge neighbour of them faces p the same way (strictly,
 // with a margin far above the rounding of the facing test). The facing of a triangle is the sign
 // of n.(p - x) for any x of its plane; a neighbour's plane passes through the shared edge, which
-// lies in the subtree's box, so bounding the directions from the box to p bounds them all. With
-// p_radius > 0 the same holds for every point of the ball of that radius around p: the directions
-// from the box to the ball lie within the angle that the two spheres' radii subtend together.
+// lies in the subtree's box, so bounding n.(p - x) over the normal cone's directions n and the
+// points x of the node's ball bounds them all. With w = p - c (c the ball's centre, D = |w|, alpha
+// the angle from the cone's axis to w, theta the cone's half-angle, r the ball's radius):
+//   n.(p - x) >= D cos(alpha + theta) - r   and   n.(p - x) <= D cos(alpha - theta) + r
+// (each while the angle stays in [0, pi], which the tests below need anyway), with
+// D cos(alpha -+ theta) = (a cos theta +- b sin theta), a = axis.w, b = |axis x w|. With p_radius > 0
+// the same holds for every point of the ball of that radius around p (r grows by it). The margin
+// is 1e-6 of the largest |p - x|, far above the rounding of the facing test (kEdgeOn 1e-12).
 bool OccluderBvh::faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const {
   const NormalCone& cone = cones_[node];
   if (cone.open || !(cone.half_angle < M_PI / 2)) return false;
-  const Vec3d to_p = p - balls_[node].center;
-  const double distance = length(to_p);
-  const double radius = balls_[node].radius + p_radius;
-  if (!(distance > radius * (1 + 1e-6))) return false;
-  // Angles alpha (axis to p), theta (the cone), phi (the box seen from p) combined through their
-  // cosines and sines: all face p when alpha + theta + phi < pi/2 - margin, all face away when
-  // alpha - theta - phi > pi/2 + margin (theta + phi < pi/2 keeps both sums where cos is monotone).
-  const double sin_phi = radius / distance, cos_phi = std::sqrt(1 - sin_phi * sin_phi);
-  const double cos_theta = cone.cos_half_angle, sin_theta = cone.sin_half_angle;
-  if (!(cos_theta * cos_phi - sin_theta * sin_phi > 0)) return false;  // theta + phi >= pi/2
-  const double cos_alpha = std::clamp(dot(cone.axis, to_p) / distance, -1.0, 1.0);
-  const double sin_alpha = std::sqrt(std::max(0.0, 1 - cos_alpha * cos_alpha));
-  const double cos_spread = cos_theta * cos_phi - sin_theta * sin_phi;  // theta + phi
-  const double sin_spread = sin_theta * cos_phi + cos_theta * sin_phi;
-  constexpr double kMargin = 1e-6;  // radians, far above the rounding of the facing test
-  if (cos_alpha * cos_spread - sin_alpha * sin_spread > kMargin) return true;  // cos(alpha + spread) > 0
-  if (cos_alpha * cos_spread + sin_alpha * sin_spread < -kMargin) return cone.solid != -2;  // cos(alpha - spread) < 0
+  const Ball& ball = balls_[node];
+  const Vec3d w = p - ball.center;
+  const double a = dot(cone.axis, w), b = length(cross(cone.axis, w));
+  const double r = ball.radius + p_radius;
+  constexpr double kMargin = 1e-6;
+  const double margin = r + kMargin * (std::abs(a) + b + r);  // |a| + b >= D
+  if (a * cone.cos_half_angle - b * cone.sin_half_angle > margin) return true;               // all face p
+  if (a * cone.cos_half_angle + b * cone.sin_half_angle < -margin) return cone.solid != -2;  // all face away
   return false;
 }
 
@@ -392,46 +432,57 @@ void OccluderBvh::triangles_in_volume(const ConvexVolume& volume, const Vec3d& s
       if (test(i)) out.push_back(i);
     return;
   }
-  visit_volume(volume, [](std::uint32_t) { return false; }, [&](std::uint32_t node) {
+  visit_volume(volume, [](std::uint32_t, std::uint32_t&) { return false; }, [&](std::uint32_t node, std::uint32_t) {
     for (std::uint32_t i = nodes_[node].first; i < nodes_[node].first + nodes_[node].count; ++i)
       if (test(order_[i])) out.push_back(order_[i]);
   });
-  std::sort(out.begin(), out.end());
 }
 
-bool OccluderBvh::near_volume(std::uint32_t tri, const ConvexVolume& volume) const {
+bool OccluderBvh::near_volume(std::uint32_t tri, const ConvexVolume& volume, std::uint32_t held) const {
   const auto& c = triangles_.corners[tri];
-  for (const HalfSpace& h : volume.planes)
+  for (std::size_t k = 0; k < volume.planes.size(); ++k) {
+    if (k < kSlabBit && (held >> k & 1u)) continue;
+    const HalfSpace& h = volume.planes[k];
     if (h.signed_distance(c[0]) < 0 && h.signed_distance(c[1]) < 0 && h.signed_distance(c[2]) < 0) return false;
+  }
   return box_of(c).overlaps(volume.box);
 }
 
 void OccluderBvh::silhouette_candidates(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
-                                        const Vec3d& p, std::vector<std::uint32_t>& out, double p_radius) const {
+                                        const Vec3d& p, std::vector<std::uint32_t>& out,
+                                        std::vector<std::uint8_t>& held_inside, double p_radius) const {
   out.clear();
+  held_inside.clear();
   if (brute_force_ || nodes_.empty()) {
     for (std::uint32_t i = 0; i < triangles_.size(); ++i)
       if (near_volume(i, volume)) out.push_back(i);
+    held_inside.assign(out.size(), 0);
     return;
   }
   // A subtree that faces p uniformly and that no plane of `inside` cuts carries no silhouette.
-  const UnitHalfSpaces slab(inside, inside_count);
-  auto uniform = [&](std::uint32_t node) { return holds(*this, slab, node) && faces_uniformly(node, p, p_radius); };
-  visit_volume(volume, uniform, [&](std::uint32_t node) {
+  const UnitHalfSpaces slab(inside, inside_count, volume.planes);
+  auto uniform = [&](std::uint32_t node, std::uint32_t& held) {
+    return holds(*this, slab, node, held) && faces_uniformly(node, p, p_radius);
+  };
+  visit_volume(volume, uniform, [&](std::uint32_t node, std::uint32_t held) {
+    const std::uint8_t in = !slab.too_many && (held & slab.bits) == slab.bits;
     for (std::uint32_t i = nodes_[node].first; i < nodes_[node].first + nodes_[node].count; ++i)
-      if (near_volume(order_[i], volume)) out.push_back(order_[i]);
+      if (near_volume(order_[i], volume, held)) {
+        out.push_back(order_[i]);
+        held_inside.push_back(in);
+      }
   });
-  std::sort(out.begin(), out.end());
 }
 
 void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
                                     const Vec3d& p, double p_radius, std::vector<std::uint32_t>& leaves) const {
   leaves.clear();
   if (brute_force_ || nodes_.empty()) return;
-  const UnitHalfSpaces slab(inside, inside_count);
-  auto uniform = [&](std::uint32_t node) { return holds(*this, slab, node) && faces_uniformly(node, p, p_radius); };
-  visit_volume(volume, uniform, [&](std::uint32_t node) { leaves.push_back(node); });
-  std::sort(leaves.begin(), leaves.end(), [&](std::uint32_t a, std::uint32_t b) { return nodes_[a].first < nodes_[b].first; });
+  const UnitHalfSpaces slab(inside, inside_count, volume.planes);
+  auto uniform = [&](std::uint32_t node, std::uint32_t& held) {
+    return holds(*this, slab, node, held) && faces_uniformly(node, p, p_radius);
+  };
+  visit_volume(volume, uniform, [&](std::uint32_t node, std::uint32_t) { leaves.push_back(node); });
 }
 
 void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
@@ -449,22 +500,38 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
   }
 }
 
+// Depth first, the left child before the right: the leaves come in the order of their triangles
+// (the tree stores a left subtree's triangles before the right one's), so what the searches collect
+// is ascending without a sort.
 template <class Prune, class Leaf>
 void OccluderBvh::visit_volume(const ConvexVolume& volume, const Prune& prune, const Leaf& leaf) const {
   const Aabb query = padded(volume.box);
   const UnitPlanes planes(volume.planes);
-  descend(
-      nodes_,
-      [&](std::uint32_t self) {
-        if (!nodes_[self].box.overlaps(query)) return false;
-        for (int k = 0; k < planes.count; ++k)
-          if (outside(self, planes.plane[k].h, planes.plane[k].origin_margin)) return false;
-        return !prune(self);
-      },
-      [&](std::uint32_t self) {
-        leaf(self);
-        return false;
-      });
+  struct Entry {
+    std::uint32_t node, held;  // held: the planes proven to hold its parent (kSlabBit)
+  };
+  Entry stack[128];
+  int top = 0;
+  stack[top++] = {0, 0};
+  while (top > 0) {
+    Entry e = stack[--top];
+    const Node& node = nodes_[e.node];
+    if (!node.box.overlaps(query)) continue;
+    bool out = false;
+    for (int k = 0; k < planes.count && !out; ++k) {
+      if (e.held >> k & 1u) continue;
+      const int side = side_of(e.node, planes.plane[k].h, planes.plane[k].origin_margin);
+      out = side < 0;
+      if (side > 0) e.held |= 1u << k;
+    }
+    if (out || prune(e.node, e.held)) continue;
+    if (node.count > 0) {
+      leaf(e.node, e.held);
+    } else {
+      stack[top++] = {node.first, e.held};
+      stack[top++] = {e.node + 1, e.held};
+    }
+  }
 }
 
 void OccluderBvh::triangles_near_segment(const Vec3d& a, const Vec3d& b, std::vector<std::uint32_t>& out) const {

@@ -58,8 +58,11 @@ class OccluderBvh {
   // the same way, whose projections' boundaries cancel.
   // p_radius > 0 asks for every point within p_radius of p at once (a cluster of vertices,
   // silhouette_cluster.h): a subtree is skipped only if it faces all of them uniformly.
+  // held_inside[i] is 1 when out[i]'s leaf lies inside every half-space of `inside` with the
+  // tests' margin (so the triangle does not cross their planes), 0 when that was not proven.
   void silhouette_candidates(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
-                             std::vector<std::uint32_t>& out, double p_radius = 0) const;
+                             std::vector<std::uint32_t>& out, std::vector<std::uint8_t>& held_inside,
+                             double p_radius = 0) const;
 
   // The same search, returning the leaves it reaches (node indices, ascending by their first
   // triangle) instead of their triangles: a cluster's search (silhouette_cluster.h).
@@ -74,17 +77,29 @@ class OccluderBvh {
   void leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
                       std::vector<std::uint32_t>& out) const;
 
+  // A triangle's plane as the shadow tests read it (is_occluder, area_visibility.h; the normal
+  // cones): n = cross(c1 - c0, c2 - c0), its length, and the triangle's longest edge squared.
+  // Computed once here rather than at every test of the triangle.
+  struct TrianglePlane {
+    Vec3d normal;
+    double normal_length = 0, longest_squared = 0;
+  };
+  const TrianglePlane& plane(std::uint32_t triangle) const { return planes_[triangle]; }
+
   // The triangles of a leaf node: indices [first, second) (triangles are stored in leaf order).
   std::pair<std::uint32_t, std::uint32_t> leaf_triangles(std::uint32_t node) const {
     return {nodes_[node].first, nodes_[node].first + nodes_[node].count};
   }
   // The triangle is not wholly outside one of the volume's planes, and its box meets the volume's.
-  bool near_volume(std::uint32_t triangle, const ConvexVolume& volume) const;
+  // Bit k of `held` (k < 16) says that plane k holds the triangle's leaf (visit_volume): not tested.
+  bool near_volume(std::uint32_t triangle, const ConvexVolume& volume, std::uint32_t held = 0) const;
 
   // The node's box lies wholly outside (inside) the half-space h, whose normal has unit length,
   // beyond a margin far above rounding; origin_margin is 2e-9 times the max-norm of h's origin.
   bool outside(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
   bool inside(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
+  // Both at once: -1 wholly outside (as outside()), 1 wholly inside (as inside()), 0 neither.
+  int side_of(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
 
   // Every triangle whose (padded) box the segment a -> b meets, unsorted (the caller tests them).
   void triangles_near_segment(const Vec3d& a, const Vec3d& b, std::vector<std::uint32_t>& out) const;
@@ -113,8 +128,9 @@ class OccluderBvh {
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
   void build_cones();
   bool faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const;
-  // Calls leaf(node) for every leaf whose box meets the volume, skipping the subtrees for which
-  // prune(node) is true.
+  // Calls leaf(node, held) for every leaf whose box meets the volume, skipping the subtrees for
+  // which prune(node, held) is true. held carries the bits of the planes proven to hold the node
+  // on the way down (kSlabBit in the .cpp); a plane that holds a node is not tested below it.
   template <class Prune, class Leaf>
   void visit_volume(const ConvexVolume& volume, const Prune& prune, const Leaf& leaf) const;
 
@@ -122,6 +138,7 @@ class OccluderBvh {
   OccluderEdges edges_;
   Aabb bounds_;
   std::vector<Aabb> boxes_;           // per triangle
+  std::vector<TrianglePlane> planes_;  // per triangle
   std::vector<std::uint32_t> order_;  // triangle indices, grouped by leaf
   std::vector<Node> nodes_;
   std::vector<NormalCone> cones_;  // per node

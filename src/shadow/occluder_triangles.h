@@ -42,12 +42,17 @@ OccluderTriangles occluders_of(const Scene& scene);
 
 // The occluder is a back face of a closed surface seen from a point p outside the surface's
 // box: it can be skipped.
-inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, const Vec3d& p) {
+// `normal` is the triangle's cross(c1 - c0, c2 - c0).
+inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, const Vec3d& p, const Vec3d& normal) {
   if (t.solid.empty() || t.solid[index] < 0) return false;
   const Aabb& box = t.solid_bounds[t.solid[index]];
   if (box.contains(p)) return false;
+  return dot(normal, p - t.corners[index][0]) < 0;
+}
+inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, const Vec3d& p) {
+  if (t.solid.empty() || t.solid[index] < 0) return false;
   const auto& c = t.corners[index];
-  return dot(cross(c[1] - c[0], c[2] - c[0]), p - c[0]) < 0;
+  return culled_back_face(t, index, p, cross(c[1] - c[0], c[2] - c[0]));
 }
 
 // True if one corner of the triangle is exactly p: a vertex is never shadowed by the triangles

@@ -2,6 +2,7 @@
 // whole shadowed evaluations on a random triangle soup.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "shadow_test_util.h"
@@ -81,4 +82,45 @@ TEST_CASE("shadowed lights are identical with the BVH on and off") {
     }
   }
   CHECK(partly > 10);  // the comparison covered real penumbrae
+}
+
+TEST_CASE("the silhouette search returns its triangles ascending, and flags only those inside the slab") {
+  // Triangles between the light and the floor, and triangles that cross the light's plane and the
+  // plane just above P (the slab's planes), so that both flags occur.
+  std::vector<Tri> tris = random_soup(3000, 21);
+  const std::vector<Tri> tall = random_soup(300, 22);
+  for (const Tri& t : tall) tris.push_back({t[0] + Vec3d{0, 0, 1.5}, t[1] - Vec3d{0, 0, 2.4}, t[2]});
+  const OccluderBvh bvh = make_bvh(tris), brute = make_bvh(tris, true);
+  const PreparedAreaLight<double> light = prepare_area_light(AreaLight<double>{square_light(1.5, 3), false});
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> pos(-4, 4);
+  std::vector<std::uint32_t> found, all;
+  std::vector<std::uint8_t> in_slab, brute_in_slab;
+  std::size_t flagged = 0, unflagged = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Vec3d p{pos(rng), pos(rng), 0};
+    const AreaView<double> view = make_area_view(light, p);
+    ClipPolygon<double> horizon;
+    clip_to_horizon(light, view, Vec3d{0, 0, 1}, horizon);
+    const ConvexVolume volume = area_shadow_volume(light, view, horizon, p);
+    const AreaSlab slab = area_slab(light, view, p);
+    const HalfSpace inside[2] = {slab.beyond_light, slab.before_p};
+    bvh.silhouette_candidates(volume, inside, 2, p, found, in_slab);
+    brute.silhouette_candidates(volume, inside, 2, p, all, brute_in_slab);
+    REQUIRE(in_slab.size() == found.size());
+    CHECK(std::is_sorted(found.begin(), found.end()));
+    CHECK(std::adjacent_find(found.begin(), found.end()) == found.end());
+    CHECK(std::includes(all.begin(), all.end(), found.begin(), found.end()));
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      if (!in_slab[k]) {
+        ++unflagged;
+        continue;
+      }
+      ++flagged;
+      for (const Vec3d& c : bvh.triangles().corners[found[k]])
+        for (const HalfSpace& h : inside) CHECK(h.signed_distance(c) > 0);
+    }
+  }
+  CHECK(flagged > 1000);
+  CHECK(unflagged > 100);
 }

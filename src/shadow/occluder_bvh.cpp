@@ -475,14 +475,19 @@ void OccluderBvh::silhouette_candidates(const ConvexVolume& volume, const HalfSp
 }
 
 void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace* inside, int inside_count,
-                                    const Vec3d& p, double p_radius, std::vector<std::uint32_t>& leaves) const {
+                                    const Vec3d& p, double p_radius, std::vector<std::uint32_t>& leaves,
+                                    std::vector<std::uint32_t>* held_planes) const {
   leaves.clear();
+  if (held_planes) held_planes->clear();
   if (brute_force_ || nodes_.empty()) return;
   const UnitHalfSpaces slab(inside, inside_count, volume.planes);
   auto uniform = [&](std::uint32_t node, std::uint32_t& held) {
     return holds(*this, slab, node, held) && faces_uniformly(node, p, p_radius);
   };
-  visit_volume(volume, uniform, [&](std::uint32_t node, std::uint32_t) { leaves.push_back(node); });
+  visit_volume(volume, uniform, [&](std::uint32_t node, std::uint32_t held) {
+    leaves.push_back(node);
+    if (held_planes) held_planes->push_back(held);
+  });
 }
 
 void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,

@@ -65,9 +65,11 @@ class OccluderBvh {
                              double p_radius = 0) const;
 
   // The same search, returning the leaves it reaches (node indices, ascending by their first
-  // triangle) instead of their triangles: a cluster's search (silhouette_cluster.h).
+  // triangle) instead of their triangles: a cluster's search (silhouette_cluster.h). held_planes,
+  // if given, receives per leaf the bits of the volume's planes proven to hold it (near_volume).
   void silhouette_leaves(const ConvexVolume& volume, const HalfSpace* inside, int inside_count, const Vec3d& p,
-                         double p_radius, std::vector<std::uint32_t>& leaves) const;
+                         double p_radius, std::vector<std::uint32_t>& leaves,
+                         std::vector<std::uint32_t>* held_planes = nullptr) const;
 
   // Of the given leaves (a cluster's, from silhouette_leaves), the positions i of those not wholly
   // outside one of `volume`'s planes or its box. Ascending. Unlike the searches, it does not ask

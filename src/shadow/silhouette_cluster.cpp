@@ -141,15 +141,15 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
                                {-normal, light.center + normal * (h_min * (1 - kApexMargin))}};
   const Vec3d center = box.center();
   const double radius = 0.5 * length(box.hi - box.lo);
-  occluders.silhouette_leaves(volume, inside, 2, center, radius, cluster.leaves);
+  occluders.silhouette_leaves(volume, inside, 2, center, radius, cluster.leaves, &cluster.held_planes);
   cluster.candidates.clear();
   std::vector<std::uint32_t>& candidates_begin = cluster.candidates_begin;
   candidates_begin.clear();
-  for (std::uint32_t leaf : cluster.leaves) {
+  for (std::size_t i = 0; i < cluster.leaves.size(); ++i) {
     candidates_begin.push_back(static_cast<std::uint32_t>(cluster.candidates.size()));
-    const auto [first, end] = occluders.leaf_triangles(leaf);
+    const auto [first, end] = occluders.leaf_triangles(cluster.leaves[i]);
     for (std::uint32_t t = first; t < end; ++t)
-      if (occluders.near_volume(t, volume)) cluster.candidates.push_back(t);
+      if (occluders.near_volume(t, volume, cluster.held_planes[i])) cluster.candidates.push_back(t);
   }
   candidates_begin.push_back(static_cast<std::uint32_t>(cluster.candidates.size()));
   cluster.box = box;

@@ -53,6 +53,7 @@ struct SilhouetteCluster {
   // chord seen from some point of B, per leaf its search reached (before the leaves without items
   // are dropped from `leaves`): the i-th leaf's are [candidates_begin[i], candidates_begin[i + 1]).
   std::vector<std::uint32_t> candidates, candidates_begin;
+  std::vector<std::uint32_t> held_planes;  // scratch: per leaf of the search, the hull's planes that hold it
   // A triangle a vertex of B reads: its facing over B, and for kVariable what the vertex needs to
   // find its own (facing_from_plane): its plane, and whether it may touch the vertex or be a
   // culled back face of a closed surface.

@@ -497,10 +497,16 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
   const UnitPlanes planes(volume.planes);  // as visit_volume
   for (std::uint32_t i = 0; i < leaves.size(); ++i) {
     const std::uint32_t leaf = leaves[i];
-    if (!nodes_[leaf].box.overlaps(query)) continue;
+    const Aabb& box = nodes_[leaf].box;
+    if (!box.overlaps(query)) continue;
+    // outside(), with the leaf's ball read once for all the planes.
+    const Ball& ball = balls_[leaf];
     bool out_of_volume = false;
-    for (int k = 0; k < planes.count && !out_of_volume; ++k)
-      out_of_volume = outside(leaf, planes.plane[k].h, planes.plane[k].origin_margin);
+    for (int k = 0; k < planes.count && !out_of_volume; ++k) {
+      const HalfSpace& h = planes.plane[k].h;
+      const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + planes.plane[k].origin_margin;
+      out_of_volume = d + ball.radius < -margin || (!(d - ball.radius > margin) && box_outside_unit(box, h));
+    }
     if (!out_of_volume) out.push_back(i);
   }
 }

@@ -305,7 +305,7 @@ void OccluderBvh::build_cones() {
     }
     finish(cones_[i]);
   }
-  // The ball test's margin (outside()) must be at least the box test's, 2e-9 (max |w| + max
+  // The ball test's margin (ball_side()) must be at least the box test's, 2e-9 (max |w| + max
   // extent) with w = corner - origin: |w| <= |centre| + |origin| + radius and the extent is at most
   // 2 radius (max-norms); 1e-12 |centre| more covers the rounding of the centre itself.
   balls_.resize(nodes_.size());
@@ -322,29 +322,22 @@ void OccluderBvh::build_cones() {
 // Where a node lies against a half-space (unit normal): decided by the ball that holds its box (one
 // dot product), and by the box only when the ball straddles the plane. The ball's margin is at
 // least the box test's (build_cones), so the ball never decides what the box test would not.
-bool OccluderBvh::outside(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
-  const Ball& ball = balls_[node];
-  const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + origin_margin;
-  if (d + ball.radius < -margin) return true;
-  if (d - ball.radius > margin) return false;
-  return box_outside_unit(nodes_[node].box, h);
-}
-
-int OccluderBvh::side_of(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
-  const Ball& ball = balls_[node];
+int OccluderBvh::ball_side(const Ball& ball, const HalfSpace& h, double origin_margin) {
   const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + origin_margin;
   if (d + ball.radius < -margin) return -1;
   if (d - ball.radius > margin) return 1;
+  return 0;
+}
+
+int OccluderBvh::side_of(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
+  if (const int side = ball_side(balls_[node], h, origin_margin)) return side;
   if (box_outside_unit(nodes_[node].box, h)) return -1;
   return box_inside_unit(nodes_[node].box, h) ? 1 : 0;
 }
 
 bool OccluderBvh::inside(std::uint32_t node, const HalfSpace& h, double origin_margin) const {
-  const Ball& ball = balls_[node];
-  const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + origin_margin;
-  if (d - ball.radius > margin) return true;
-  if (d + ball.radius < -margin) return false;
-  return box_inside_unit(nodes_[node].box, h);
+  const int side = ball_side(balls_[node], h, origin_margin);
+  return side != 0 ? side > 0 : box_inside_unit(nodes_[node].box, h);
 }
 
 // Every triangle of the subtree and every edge neighbour of them faces p the same way (strictly,
@@ -499,13 +492,12 @@ void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const
     const std::uint32_t leaf = leaves[i];
     const Aabb& box = nodes_[leaf].box;
     if (!box.overlaps(query)) continue;
-    // outside(), with the leaf's ball read once for all the planes.
+    // Wholly outside a plane: by the leaf's ball, or by its box where the ball crosses the plane.
     const Ball& ball = balls_[leaf];
     bool out_of_volume = false;
     for (int k = 0; k < planes.count && !out_of_volume; ++k) {
-      const HalfSpace& h = planes.plane[k].h;
-      const double d = dot(h.normal, ball.center - h.origin), margin = ball.margin + planes.plane[k].origin_margin;
-      out_of_volume = d + ball.radius < -margin || (!(d - ball.radius > margin) && box_outside_unit(box, h));
+      const int side = ball_side(ball, planes.plane[k].h, planes.plane[k].origin_margin);
+      out_of_volume = side < 0 || (side == 0 && box_outside_unit(box, planes.plane[k].h));
     }
     if (!out_of_volume) out.push_back(i);
   }

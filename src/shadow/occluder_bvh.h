@@ -96,11 +96,10 @@ class OccluderBvh {
   // Bit k of `held` (k < 16) says that plane k holds the triangle's leaf (visit_volume): not tested.
   bool near_volume(std::uint32_t triangle, const ConvexVolume& volume, std::uint32_t held = 0) const;
 
-  // The node's box lies wholly outside (inside) the half-space h, whose normal has unit length,
-  // beyond a margin far above rounding; origin_margin is 2e-9 times the max-norm of h's origin.
-  bool outside(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
+  // The node's box lies wholly inside the half-space h, whose normal has unit length, beyond a
+  // margin far above rounding; origin_margin is 2e-9 times the max-norm of h's origin.
   bool inside(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
-  // Both at once: -1 wholly outside (as outside()), 1 wholly inside (as inside()), 0 neither.
+  // -1: the node's box lies wholly outside h (beyond the same margin), 1: wholly inside, 0: neither.
   int side_of(std::uint32_t node, const HalfSpace& h, double origin_margin) const;
 
   // Every triangle whose (padded) box the segment a -> b meets, unsorted (the caller tests them).
@@ -122,11 +121,13 @@ class OccluderBvh {
     int solid = -1;      // the closed solid all its triangles belong to, -1 for none, -2 if mixed
   };
   // A ball that holds a node's box (its centre, half its diagonal), and the part of the margin of
-  // a test against a plane that does not depend on the plane (outside(), inside()).
+  // a test against a plane that does not depend on the plane (ball_side()).
   struct Ball {
     Vec3d center;
     double radius = 0, margin = 0;
   };
+  // -1: the ball lies wholly outside h (unit normal) beyond its margin, 1: wholly inside, 0: neither.
+  static int ball_side(const Ball& ball, const HalfSpace& h, double origin_margin);
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
   void build_cones();
   bool faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const;

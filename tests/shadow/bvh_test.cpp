@@ -25,6 +25,14 @@ std::vector<Tri> random_soup(int count, unsigned seed) {
   return tris;
 }
 
+// The volume between a floor point p (normal +z) and the light.
+ConvexVolume volume_to_light(const PreparedAreaLight<double>& light, const Vec3d& p) {
+  const AreaView<double> view = make_area_view(light, p);
+  ClipPolygon<double> horizon;
+  clip_to_horizon(light, view, Vec3d{0, 0, 1}, horizon);
+  return area_shadow_volume(light, view, horizon, p);
+}
+
 }  // namespace
 
 TEST_CASE("BVH and brute force agree on shadow rays and volume queries") {
@@ -47,10 +55,7 @@ TEST_CASE("BVH and brute force agree on shadow rays and volume queries") {
   std::size_t found = 0;
   for (int i = 0; i < 200; ++i) {
     const Vec3d p{pos(rng), pos(rng), 0};
-    const AreaView<double> view = make_area_view(light, p);
-    ClipPolygon<double> horizon;
-    clip_to_horizon(light, view, Vec3d{0, 0, 1}, horizon);
-    const ConvexVolume volume = area_shadow_volume(light, view, horizon, p);
+    const ConvexVolume volume = volume_to_light(light, p);
     bvh.triangles_in_volume(volume, p, a);
     brute.triangles_in_volume(volume, p, b);
     CHECK(a == b);
@@ -99,11 +104,8 @@ TEST_CASE("the silhouette search returns its triangles ascending, and flags only
   std::size_t flagged = 0, unflagged = 0;
   for (int i = 0; i < 200; ++i) {
     const Vec3d p{pos(rng), pos(rng), 0};
-    const AreaView<double> view = make_area_view(light, p);
-    ClipPolygon<double> horizon;
-    clip_to_horizon(light, view, Vec3d{0, 0, 1}, horizon);
-    const ConvexVolume volume = area_shadow_volume(light, view, horizon, p);
-    const AreaSlab slab = area_slab(light, view, p);
+    const ConvexVolume volume = volume_to_light(light, p);
+    const AreaSlab slab = area_slab(light, make_area_view(light, p), p);
     const HalfSpace inside[2] = {slab.beyond_light, slab.before_p};
     bvh.silhouette_candidates(volume, inside, 2, p, found, in_slab);
     brute.silhouette_candidates(volume, inside, 2, p, all, brute_in_slab);

@@ -88,7 +88,7 @@ bool box_inside_unit(const Aabb& box, const HalfSpace& h) {
 }
 
 // A half-space with a unit normal, and the part of the ball tests' margin that its origin brings
-// (OccluderBvh::outside).
+// (OccluderBvh::ball_side).
 struct UnitPlane {
   HalfSpace h;
   double origin_margin = 0;

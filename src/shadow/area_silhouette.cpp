@@ -154,7 +154,7 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const Silh
       if (s.slot_facing[k] == kUnknown) {
         int ft = 0;
         if (!(slot.may_touch && touches(triangles.corners[slot.triangle], f.p)) &&
-            !(slot.in_solid && culled_back_face(triangles, slot.triangle, f.p)))
+            !(slot.in_solid && culled_back_face(triangles, slot.triangle, f.p, slot.normal)))
           ft = facing_from_plane(slot.normal, slot.normal_length, slot.corner, f.p);
         s.slot_facing[k] = static_cast<std::int8_t>(ft);
       }

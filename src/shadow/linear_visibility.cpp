@@ -76,7 +76,7 @@ LinearVisibility visible_linear_intervals(const LinearLight<double>& light, cons
   const HalfSpace strip_near{m, p + m * (h * kNearP)};
   const HalfSpace strip_far{-m, p + m * (h * (1 - kNearLight))};
   for (std::uint32_t index : scratch.candidates) {
-    if (culled_back_face(occluders.triangles(), index, p)) continue;
+    if (culled_back_face(occluders.triangles(), index, p, occluders.plane(index).normal)) continue;
     const auto& tri = occluders.triangles().corners[index];
     double d[3];
     double scale = 0;

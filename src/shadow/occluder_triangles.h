@@ -49,11 +49,6 @@ inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, co
   if (box.contains(p)) return false;
   return dot(normal, p - t.corners[index][0]) < 0;
 }
-inline bool culled_back_face(const OccluderTriangles& t, std::uint32_t index, const Vec3d& p) {
-  if (t.solid.empty() || t.solid[index] < 0) return false;
-  const auto& c = t.corners[index];
-  return culled_back_face(t, index, p, cross(c[1] - c[0], c[2] - c[0]));
-}
 
 // True if one corner of the triangle is exactly p: a vertex is never shadowed by the triangles
 // that contain it, including triangles of other primitives through the same position (split

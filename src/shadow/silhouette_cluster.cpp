@@ -28,11 +28,12 @@ bool contains(const Aabb& outer, const Aabb& inner) {
 
 // The facing of triangle t (facing_of in area_silhouette.cpp: +1 faces P, -1 faces away, 0
 // hides nothing) if it is the same for every P of the box b, else kVariableFacing.
-std::int8_t facing_over_box(const OccluderTriangles& triangles, std::uint32_t t, const Aabb& b) {
+std::int8_t facing_over_box(const OccluderBvh& occluders, std::uint32_t t, const Aabb& b) {
+  const OccluderTriangles& triangles = occluders.triangles();
   const auto& c = triangles.corners[t];
-  const Vec3d n = cross(c[1] - c[0], c[2] - c[0]);
-  const double longest = std::max({length_squared(c[1] - c[0]), length_squared(c[2] - c[1]), length_squared(c[0] - c[2])});
-  if (!(length(n) > kSliver * longest)) return 0;  // a needle hides nothing from anywhere
+  const OccluderBvh::TrianglePlane& plane = occluders.plane(t);
+  const Vec3d& n = plane.normal;
+  if (!(plane.normal_length > kSliver * plane.longest_squared)) return 0;  // a needle hides nothing from anywhere
   // The triangle and B in one plane of constant x, y or z (a flat floor around a cluster of its
   // own vertices): n is exactly along that axis and n.(c0 - P) is exactly 0 for every P of B, so
   // is_occluder sees it edge-on from all of them.
@@ -47,12 +48,12 @@ std::int8_t facing_over_box(const OccluderTriangles& triangles, std::uint32_t t,
   const double spread = std::abs(n.x) * half.x + std::abs(n.y) * half.y + std::abs(n.z) * half.z;
   const double lo = at_middle - spread, hi = at_middle + spread;
   const double reach = length(c[0] - middle) + length(half);
-  const double margin = kClassMargin * length(n) * reach;
+  const double margin = kClassMargin * plane.normal_length * reach;
   if (hi < -margin) return 1;  // faces every P of the box
   // Seen edge-on from every P of the box (its plane holds the box, e.g. a floor around a cluster of
   // its own vertices): |side| stays below half of is_occluder's kEdgeOn bound at P's distance.
   const Vec3d gap = max(b.lo - c[0], max(Vec3d{}, c[0] - b.hi));
-  if (std::max(std::abs(lo), std::abs(hi)) < 0.5 * kEdgeOn * length(n) * length(gap)) return 0;
+  if (std::max(std::abs(lo), std::abs(hi)) < 0.5 * kEdgeOn * plane.normal_length * length(gap)) return 0;
   if (!(lo > margin)) return kVariableFacing;
   // Faces away from every P: hidden unless it is a back face of a closed surface culled from P
   // (culled_back_face: P outside the surface's box).
@@ -178,7 +179,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   auto facing = [&](std::uint32_t t) {
     if (cluster.facing_stamp[t] != cluster.stamp) {
       cluster.facing_stamp[t] = cluster.stamp;
-      cluster.facing[t] = facing_over_box(triangles, t, box);
+      cluster.facing[t] = facing_over_box(occluders, t, box);
     }
     return cluster.facing[t];
   };
@@ -209,9 +210,9 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
       cluster.slot_of[t] = static_cast<std::uint32_t>(cluster.slots.size());
       const auto& c = triangles.corners[t];
       SilhouetteCluster::Slot s;
-      s.normal = cross(c[1] - c[0], c[2] - c[0]);
+      s.normal = occluders.plane(t).normal;
       s.corner = c[0];
-      s.normal_length = length(s.normal);
+      s.normal_length = occluders.plane(t).normal_length;
       s.triangle = t;
       s.facing = facing(t);
       s.may_touch = box.contains(c[0]) || box.contains(c[1]) || box.contains(c[2]);

@@ -10,7 +10,8 @@
 // - specular methods against the exact lobe integral at tolerance 1e-12. For the peak and the
 //   neighbourhood this is the error of the paper's approximation itself (eq. 7-8), not a bug.
 // Errors are relative to max(|baseline|, 1e-12 * max baseline over the set).
-// The run_engine lines compare the exact specular's closed form (integer m) with its adaptive form.
+// The run_engine lines compare the exact specular's closed forms (the recurrence for integer m, the
+// incomplete-beta form for n = 2) with its adaptive form.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -87,8 +88,7 @@ void run(benchmark::State& state, Kind kind, double falloff, SpecularOptions spe
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(cases.size()));
   // Errors, outside the timed loop; the baseline is computed in double from the same inputs.
   std::vector<double> value, base;
-  SpecularOptions base_spec{SpecularMethod::kExact};
-  base_spec.exact_tolerance = 1e-12;
+  const SpecularOptions base_spec{SpecularMethod::kNone};
   LinearDiffuseOptions base_diff;
   base_diff.force_quadrature = true;
   base_diff.quadrature_tolerance = 1e-14;
@@ -97,9 +97,11 @@ void run(benchmark::State& state, Kind kind, double falloff, SpecularOptions spe
     const LinearLight<double> ld{static_cast<Vec3d>(lights[i].q0), static_cast<Vec3d>(lights[i].q1), falloff};
     const ShadingPoint<double> pd{static_cast<Vec3d>(points[i].p), static_cast<Vec3d>(points[i].n),
                                   static_cast<Vec3d>(points[i].rv), double(points[i].shininess)};
-    const Response<double> b = shade_linear(ld, pd, base_spec, base_diff);
+    // The specular's baseline is the adaptive form itself (the dispatch would pick a closed form).
+    const double b = kind == Kind::kDiffuse ? shade_linear(ld, pd, base_spec, base_diff).diffuse
+                                            : linear_specular_exact(ld, pd, 1e-12, spec.falloff);
     value.push_back(kind == Kind::kDiffuse ? double(r.diffuse) : double(r.specular));
-    base.push_back(kind == Kind::kDiffuse ? b.diffuse : b.specular);
+    base.push_back(b);
   }
   report_errors(state, value, base);
 }
@@ -118,62 +120,106 @@ SpecularOptions spec(SpecularMethod m, int k = 4, double tol = 1e-9) {
 void run_d(benchmark::State& s, Kind k, double n, SpecularOptions sp, LinearDiffuseOptions d) { run<double>(s, k, n, sp, d); }
 void run_f(benchmark::State& s, Kind k, double n, SpecularOptions sp, LinearDiffuseOptions d) { run<float>(s, k, n, sp, d); }
 
-// The exact specular's two engines on the same cases with integer m log-uniform in [m_lo, m_hi]
-// (the random set above otherwise): the closed form where its bound holds, else adaptive
-// (linear_specular_exact_dispatch, what `--specular exact` runs), and the adaptive form alone
-// (linear_specular_exact_frame, tolerance 1e-9). Both on the frame set up in long double, timed
-// with it. Errors against the adaptive form at tolerance 1e-12; closed_fraction = the share of
-// cases the closed form answers. The closed_forced lines time the recurrence alone on every case,
-// accepted or not (their errors include the refused cases: they show why the bound is needed).
-enum class Engine { kDispatch, kAdaptive, kClosedForced };
+// The exact specular's engines on the same cases with m log-uniform in [m_lo, m_hi] (rounded to
+// integers unless `real_m`; the random set above otherwise), falloff n on the specular (0: the
+// paper's form; 2: the default definition), all on the frame set up in long double, timed with it:
+// - dispatch: linear_specular_exact_dispatch, what `--specular exact` runs (n = 2: the recurrence
+//   where its bound holds up to kLinearRecurrenceMaxShininess, the incomplete-beta form where its
+//   bound holds, the adaptive form for the rest; n = 0: the recurrence or the adaptive form);
+// - recurrence_or_adaptive: the dispatch before the incomplete-beta form, as a baseline in the
+//   same process (the recurrence for integer m <= kLinearClosedDispatchMaxShininess where its bound
+//   holds, else the adaptive form);
+// - adaptive_only: linear_specular_exact_frame at tolerance 1e-9;
+// - closed_forced / beta_forced: the recurrence (integer m) or the incomplete-beta form alone on
+//   every case, accepted or not (their errors include the refused cases: why the bounds are needed).
+// Errors against the adaptive form at tolerance 1e-12; closed_fraction / beta_fraction = the share
+// of cases each form accepts.
+enum class Engine { kDispatch, kRecurrenceOrAdaptive, kAdaptive, kClosedForced, kBetaForced };
 
-void run_engine(benchmark::State& state, Engine engine, double m_lo, double m_hi) {
-  std::vector<Case> cases = make_cases(2.0);
+void run_engine(benchmark::State& state, Engine engine, double m_lo, double m_hi, int n, bool real_m) {
+  std::vector<Case> cases = make_cases(double(n));
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u01(0, 1);
-  for (Case& c : cases)
-    c.sp.shininess = std::round(std::pow(10.0, std::log10(m_lo) + (std::log10(m_hi) - std::log10(m_lo)) * u01(rng)));
-  auto eval = [engine](const Case& c) {
+  for (Case& c : cases) {
+    const double m = std::pow(10.0, std::log10(m_lo) + (std::log10(m_hi) - std::log10(m_lo)) * u01(rng));
+    c.sp.shininess = real_m ? m : std::round(m);
+  }
+  const double nf = double(n);
+  auto eval = [engine, n, nf](const Case& c) {
     const LinearFrame<double> fr = make_linear_frame_precise(c.light, c.sp);
-    if (engine == Engine::kClosedForced) return linear_specular_closed_frame(fr, int(c.sp.shininess)).value;
-    return engine == Engine::kDispatch ? linear_specular_exact_dispatch(fr, c.sp.shininess, 1e-9)
-                                       : linear_specular_exact_frame(fr, c.sp.shininess, 1e-9);
+    const double m = c.sp.shininess;
+    switch (engine) {
+      case Engine::kDispatch: return linear_specular_exact_dispatch(fr, m, 1e-9, nf);
+      case Engine::kRecurrenceOrAdaptive:
+        if (m == std::floor(m) && m <= kLinearClosedDispatchMaxShininess) {
+          const LinearSpecularClosed<double> k = linear_specular_closed_frame(fr, int(m), n);
+          if (k.accepted) return k.value;
+        }
+        return linear_specular_exact_frame(fr, m, 1e-9, nf);
+      case Engine::kAdaptive: return linear_specular_exact_frame(fr, m, 1e-9, nf);
+      case Engine::kClosedForced: return linear_specular_closed_frame(fr, int(m), n).value;
+      case Engine::kBetaForced: return linear_specular_beta_frame(fr, m).value;
+    }
+    return 0.0;
   };
   for (auto _ : state)
     for (const Case& c : cases) benchmark::DoNotOptimize(eval(c));
   state.SetItemsProcessed(int64_t(state.iterations()) * int64_t(cases.size()));
   std::vector<double> value, base;
-  int closed = 0;
+  int closed = 0, beta = 0;
   for (const Case& c : cases) {
     const LinearFrame<double> fr = make_linear_frame_precise(c.light, c.sp);
+    const double m = c.sp.shininess;
     value.push_back(eval(c));
-    base.push_back(linear_specular_exact_frame(fr, c.sp.shininess, 1e-12));
-    if (linear_specular_closed_frame(fr, int(c.sp.shininess)).accepted) ++closed;
+    base.push_back(linear_specular_exact_frame(fr, m, 1e-12, nf));
+    if (m == std::floor(m) && linear_specular_closed_frame(fr, int(m), n).accepted) ++closed;
+    if (n == 2 && linear_specular_beta_frame(fr, m).accepted) ++beta;
   }
   report_errors(state, value, base);
-  state.counters["closed_fraction"] = engine == Engine::kAdaptive ? 0.0 : double(closed) / double(cases.size());
+  state.counters["closed_fraction"] = double(closed) / double(cases.size());
+  if (n == 2) state.counters["beta_fraction"] = double(beta) / double(cases.size());
 }
 
 }  // namespace
 
-BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_1_100_closed_or_adaptive, Engine::kDispatch, 1.0, 100.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_1_100_adaptive_only, Engine::kAdaptive, 1.0, 100.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_1_100_closed_forced, Engine::kClosedForced, 1.0, 100.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_100_1e4_closed_forced, Engine::kClosedForced, 100.0, 1e4);
-BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_100_1e4_closed_or_adaptive, Engine::kDispatch, 100.0, 1e4);
-BENCHMARK_CAPTURE(run_engine, specular_exact_int_m_100_1e4_adaptive_only, Engine::kAdaptive, 100.0, 1e4);
-// Where the closed form's O(m) recurrence stops paying (kLinearClosedDispatchMaxShininess): what
-// `exact` runs (the dispatch: closed form, or adaptive where it is refused, up to the cap) and the
-// recurrence alone on every case, against the adaptive form alone, at one m.
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_100_closed_or_adaptive, Engine::kDispatch, 100.0, 100.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_100_adaptive_only, Engine::kAdaptive, 100.0, 100.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_300_closed_or_adaptive, Engine::kDispatch, 300.0, 300.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_300_adaptive_only, Engine::kAdaptive, 300.0, 300.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_1000_closed_or_adaptive, Engine::kDispatch, 1000.0, 1000.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_1000_adaptive_only, Engine::kAdaptive, 1000.0, 1000.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_1000_closed_forced, Engine::kClosedForced, 1000.0, 1000.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_3000_closed_forced, Engine::kClosedForced, 3000.0, 3000.0);
-BENCHMARK_CAPTURE(run_engine, specular_exact_m_3000_adaptive_only, Engine::kAdaptive, 3000.0, 3000.0);
+// n = 0 (the paper's form, `--specular exact-no-falloff`): the recurrence or the adaptive form.
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_int_m_1_100_closed_or_adaptive, Engine::kDispatch, 1.0, 100.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_int_m_1_100_adaptive_only, Engine::kAdaptive, 1.0, 100.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_int_m_1_100_closed_forced, Engine::kClosedForced, 1.0, 100.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_int_m_100_1e4_closed_forced, Engine::kClosedForced, 100.0, 1e4, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_int_m_100_1e4_closed_or_adaptive, Engine::kDispatch, 100.0, 1e4, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_int_m_100_1e4_adaptive_only, Engine::kAdaptive, 100.0, 1e4, 0, false);
+// Where the recurrence's O(m) stops paying (kLinearClosedDispatchMaxShininess, n = 0).
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_100_closed_or_adaptive, Engine::kDispatch, 100.0, 100.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_100_adaptive_only, Engine::kAdaptive, 100.0, 100.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_300_closed_or_adaptive, Engine::kDispatch, 300.0, 300.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_300_adaptive_only, Engine::kAdaptive, 300.0, 300.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_1000_closed_or_adaptive, Engine::kDispatch, 1000.0, 1000.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_1000_adaptive_only, Engine::kAdaptive, 1000.0, 1000.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_1000_closed_forced, Engine::kClosedForced, 1000.0, 1000.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_3000_closed_forced, Engine::kClosedForced, 3000.0, 3000.0, 0, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n0_m_3000_adaptive_only, Engine::kAdaptive, 3000.0, 3000.0, 0, false);
+// n = 2 (the default): the dispatch with the incomplete-beta form against the dispatch before it.
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_int_m_1_100_dispatch, Engine::kDispatch, 1.0, 100.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_int_m_1_100_recurrence_or_adaptive, Engine::kRecurrenceOrAdaptive, 1.0, 100.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_int_m_1_100_adaptive_only, Engine::kAdaptive, 1.0, 100.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_real_m_1_100_dispatch, Engine::kDispatch, 1.0, 100.0, 2, true);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_real_m_1_100_recurrence_or_adaptive, Engine::kRecurrenceOrAdaptive, 1.0, 100.0, 2, true);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_int_m_100_1e4_dispatch, Engine::kDispatch, 100.0, 1e4, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_int_m_100_1e4_recurrence_or_adaptive, Engine::kRecurrenceOrAdaptive, 100.0, 1e4, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_real_m_100_1e4_dispatch, Engine::kDispatch, 100.0, 1e4, 2, true);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_real_m_100_1e4_adaptive_only, Engine::kAdaptive, 100.0, 1e4, 2, true);
+// Where the W recurrence stops paying against the incomplete-beta form (kLinearRecurrenceMaxShininess).
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_10_closed_forced, Engine::kClosedForced, 10.0, 10.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_10_beta_forced, Engine::kBetaForced, 10.0, 10.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_30_closed_forced, Engine::kClosedForced, 30.0, 30.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_30_beta_forced, Engine::kBetaForced, 30.0, 30.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_100_closed_forced, Engine::kClosedForced, 100.0, 100.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_100_beta_forced, Engine::kBetaForced, 100.0, 100.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_300_closed_forced, Engine::kClosedForced, 300.0, 300.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_300_beta_forced, Engine::kBetaForced, 300.0, 300.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_1000_closed_forced, Engine::kClosedForced, 1000.0, 1000.0, 2, false);
+BENCHMARK_CAPTURE(run_engine, specular_exact_n2_m_1000_beta_forced, Engine::kBetaForced, 1000.0, 1000.0, 2, false);
 BENCHMARK_CAPTURE(run_d, diffuse_closed_n2_double, Kind::kDiffuse, 2.0, kNoSpec, kClosed);
 BENCHMARK_CAPTURE(run_f, diffuse_closed_n2_float, Kind::kDiffuse, 2.0, kNoSpec, kClosed);
 BENCHMARK_CAPTURE(run_d, diffuse_closed_n1_double, Kind::kDiffuse, 1.0, kNoSpec, kClosed);

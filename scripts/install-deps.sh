@@ -13,7 +13,7 @@ packages=(
   libcli11-dev                           # command line
   doctest-dev                            # tests
   draco                                  # tests: draco_transcoder makes the Draco-compressed test assets
-  libboost-dev                           # Boost.Math quadrature for independent test references
+  libboost-dev                           # Boost.Math: incomplete beta (linear specular), quadrature for the tests' references
   libbenchmark-dev                       # bench/ programs
   clang libclang-rt-14-dev libomp-dev    # fuzz/ targets (libFuzzer, clang's OpenMP), run by .ci/run
 )

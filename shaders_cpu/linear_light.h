@@ -8,8 +8,9 @@
 // Dispatch: integer falloff n in {0,1,2,3} uses the closed forms (linear_diffuse_closed.h) unless
 // LinearDiffuseOptions::force_quadrature; any other n in [0, 3] uses linear_diffuse_quadrature.h.
 // Specular: kNone -> 0, kPeak -> linear_specular_peak.h, kNeighborhood ->
-// linear_specular_neighborhood.h, kExact -> linear_specular_closed.h for integer m where its
-// rounding bound holds, else linear_specular_exact.h (linear_specular_exact_dispatch). The frame
+// linear_specular_neighborhood.h, kExact -> linear_specular_closed.h (integer m) or
+// linear_specular_beta.h (falloff 2, any m) where their rounding bounds hold, else
+// linear_specular_exact.h (linear_specular_exact_dispatch). The frame
 // (linear_geometry.h) is built once per call and shared.
 //
 // Per-light constants: only Ld = Q1 - Q0, |Ld| and u = Ld/|Ld| (docs/linear-lights.md, E1);
@@ -26,6 +27,7 @@
 #include "linear_diffuse_closed.h"
 #include "linear_diffuse_quadrature.h"
 #include "linear_geometry.h"
+#include "linear_specular_beta.h"
 #include "linear_specular_closed.h"
 #include "linear_specular_exact.h"
 #include "linear_specular_neighborhood.h"
@@ -33,15 +35,25 @@
 
 namespace vlit {
 
-// The exact specular: the closed form for integer m <= kLinearClosedDispatchMaxShininess where its
-// rounding bound holds (linear_specular_closed.h), the adaptive form otherwise and for real m
-// (linear_specular_exact.h): above that m the closed form's O(m) recurrence is the slower one.
-// n: the falloff exponent on the specular (0: none); the closed form takes n = 0 and n = 2.
-// Normalised (units of scale^-n).
+// The exact specular. With the inverse-square falloff (n = 2, the default): the recurrence of
+// linear_specular_closed.h for integer m <= kLinearRecurrenceMaxShininess, the incomplete-beta form
+// (linear_specular_beta.h, O(1) in m) for every other m >= 0, each where its rounding bound holds.
+// (Below that m the recurrence is the faster, and on the cases it refuses the adaptive form costs
+// less on average than Boost's incomplete beta: bench/linear_light_bench specular_exact_n2_*.)
+// n = 0: the recurrence for integer m <= kLinearClosedDispatchMaxShininess where its bound holds.
+// Everything they refuse, and other n: the adaptive form (linear_specular_exact.h).
+// n: the falloff exponent on the specular (0: none). Normalised (units of scale^-n).
 template <class A>
 A linear_specular_exact_dispatch(const LinearFrame<A>& fr, A m, A rel_tol, A n = A(0)) {
-  if (m == std::floor(m) && m >= A(0) && m <= A(kLinearClosedDispatchMaxShininess) && (n == A(0) || n == A(2))) {
-    const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m), int(n));
+  const bool integer_m = m == std::floor(m) && m >= A(0);
+  if (n == A(2) && m >= A(0) && !(integer_m && m <= A(kLinearRecurrenceMaxShininess))) {
+    const LinearSpecularClosed<A> b = linear_specular_beta_frame(fr, m);
+    if (b.accepted) return b.value;
+  } else if (integer_m && m <= A(kLinearRecurrenceMaxShininess) && n == A(2)) {
+    const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m), 2);
+    if (c.accepted) return c.value;
+  } else if (integer_m && m <= A(kLinearClosedDispatchMaxShininess) && n == A(0)) {
+    const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m), 0);
     if (c.accepted) return c.value;
   }
   return linear_specular_exact_frame(fr, m, rel_tol, n);

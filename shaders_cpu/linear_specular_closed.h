@@ -68,7 +68,7 @@
 //   on the tangent plane, grazing, zero-length, P on the segment, tiny 1e-6, huge 1e6) at
 //   m = 0, 1, 40, 1e4 through `--specular exact`: max 9.5e-13, all finite.
 // Float: the float instantiation computes in double (LinearCompute) and rounds once.
-// Cost (`./build/release/bench/linear_light_bench --benchmark_filter=run_engine`, CPU time per
+// Cost (`./build/release/bench/linear_light_bench --benchmark_filter=run_engine/specular_exact_n0`, CPU time per
 // evaluation including the long-double frame, n = 0): closed form 0.49 us for m in [1, 100] and
 // 10 us for m in [1e2, 1e4] (O(m)); adaptive 8.7 us and 14.5 us on the same cases. The W chain
 // (n = 2) is a subset of the U chain's work per step.
@@ -83,6 +83,7 @@
 
 #include "core/robust_math.h"
 #include "linear_geometry.h"
+#include "linear_lobe_interval.h"
 
 namespace vlit {
 
@@ -94,11 +95,15 @@ inline constexpr double kLinearClosedBound = 5e-12;
 inline constexpr double kLinearClosedMaxCancellation = 64;
 // Largest m the recurrence is run for (m/2 steps); above it the adaptive form is used.
 inline constexpr int kLinearClosedMaxShininess = 100000;
-// The dispatch (linear_light.h) uses this form up to here only: above it, its O(m) recurrence (plus
-// the adaptive form on the cases it refuses) costs more than the adaptive form alone (bench
-// specular_exact_m_*: even at m = 1e3; the recurrence alone 3.3x the adaptive form at m = 3e3;
-// docs/linear-lights.md).
+// The dispatch (linear_light.h) uses this form for n = 0 up to here only: above it, its O(m)
+// recurrence (plus the adaptive form on the cases it refuses) costs more than the adaptive form
+// alone (bench specular_exact_n0_m_*: even at m = 1e3; the recurrence alone 3.3x the adaptive form
+// at m = 3e3; docs/linear-lights.md).
 inline constexpr int kLinearClosedDispatchMaxShininess = 1000;
+// With the falloff n = 2 the dispatch runs the W recurrence for integer m up to here only; above it
+// the incomplete-beta form (linear_specular_beta.h, O(1) in m) is the faster one (bench
+// specular_exact_n2_m_*_closed_forced against *_beta_forced: slower at m = 100, faster at m = 300).
+inline constexpr int kLinearRecurrenceMaxShininess = 200;
 
 template <class A>
 struct LinearSpecularClosed {
@@ -131,29 +136,11 @@ LinearSpecularClosed<A> linear_specular_closed_frame(const LinearFrame<A>& fr, i
     r.accepted = false;
     return r;
   }
-  // Clip [sa, sb] to the lobe's half-space ar + br s >= 0. The clipped length is kept as offsets
-  // from sa (tau in [tau_lo, tau_hi] within [0, delta]): sb - sa cancels for a short interval far
-  // from the foot (a far light), delta does not.
-  A lo = fr.sa, hi = fr.sb, tau_lo = 0, tau_hi = fr.delta;
-  if (fr.br != A(0)) {
-    const A s_zero = -fr.ar / fr.br;
-    if (fr.br > A(0) && s_zero > lo) { lo = s_zero; tau_lo = s_zero - fr.sa; }
-    if (fr.br < A(0) && s_zero < hi) { hi = s_zero; tau_hi = s_zero - fr.sa; }
-  } else if (!(fr.ar > A(0))) {
-    return r;
-  }
-  if (!(hi > lo) || !(tau_hi > tau_lo)) return r;
-  const A big_a = fr.ar / fr.h, big_b = fr.br;
-  const A big_c = std::hypot(big_a, big_b);
-  if (!(big_c > A(0))) return r;
-  const A a = big_a / big_c, b = big_b / big_c;
-  const A xa = lo / fr.h, xb = hi / fr.h;
-  const A ra = std::hypot(A(1), xa), rb = std::hypot(A(1), xb);  // sqrt(1 + x^2) = sec θ
-  const A ca = std::fmax((a + b * xa) / ra, A(0)), cb = std::fmax((a + b * xb) / rb, A(0));
-  const A spa = (a * xa - b) / ra, spb = (a * xb - b) / rb;
-  const A theta_a = std::atan(xa), theta_b = std::atan(xb), theta0 = std::atan2(b, a);
-  const A dx = (tau_hi - tau_lo) / fr.h;
-  const A dtheta = std::atan2(dx, A(1) + xa * xb);
+  const LinearLobeInterval<A> li = linear_lobe_interval(fr);
+  if (li.empty) return r;
+  const A big_c = li.big_c, a = li.a, b = li.b, xa = li.xa, xb = li.xb, ra = li.ra, rb = li.rb;
+  const A ca = li.ca, cb = li.cb, spa = li.spa, spb = li.spb;
+  const A theta_a = li.theta_a, theta_b = li.theta_b, theta0 = li.theta0, dx = li.dx, dtheta = li.dtheta;
   // [sqrt(1 + x^2)] = (x_b - x_a)(x_b + x_a) / (r_b + r_a): no cancellation.
   const A dsec = dx * (xb + xa) / (rb + ra);
   constexpr A eps = std::numeric_limits<A>::epsilon();

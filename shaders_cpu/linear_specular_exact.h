@@ -13,9 +13,10 @@
 // adaptive_kronrod.h (the area and disk exact forms' integrator), starting from pieces graded by 4
 // around the foot of the perpendicular, the peak s_peak (linear_specular_peak.h) and the zero of
 // Rv.L (comments at the cuts below).
-// Role: `--specular exact` uses linear_specular_closed.h for integer m where its rounding bound
-// holds and this form elsewhere (linear_specular_exact_dispatch in linear_light.h); both on the
-// frame set up in long double (make_linear_frame_precise).
+// Role: `--specular exact` uses linear_specular_closed.h (integer m) and linear_specular_beta.h
+// (falloff 2, any m) where their rounding bounds hold and this form elsewhere
+// (linear_specular_exact_dispatch in linear_light.h); all on the frame set up in long double
+// (make_linear_frame_precise).
 // Departures from the paper: it is not in the paper; horizon clipping.
 // Stiff cases: zero-length (point value, exact), P on the segment (L̂ = ±u on the visible part;
 // with falloff n >= 1 the integral diverges and gives 0, as the diffuse does, linear_diffuse_closed.h),

@@ -65,6 +65,19 @@ inline Config stiff_case(const std::string& name) {
   return c;
 }
 
+// A light of length `len` (1e-6: tiny, 1e6: huge) at distance ~1 above P, Rv toward its middle.
+inline Config sized_light_case(double len, double shininess) {
+  Config c;
+  c.name = len < 1 ? "tiny 1e-6" : "huge 1e6";
+  c.p = {0, 0, 0};
+  c.n = normalize(Vec3d{0.1, 0.2, 1});
+  c.q0 = {0.3 - len / 2, 0.2, 1};
+  c.q1 = {0.3 + len / 2, 0.2, 1};
+  c.rv = normalize(Vec3d{0.3, 0.2, 1});
+  c.shininess = shininess;
+  return c;
+}
+
 inline const std::vector<std::string>& stiff_names() {
   static const std::vector<std::string> names{"collinear", "near-collinear", "far 1e6", "near 1e-6",
                                               "crossing horizon", "endpoint on tangent plane",

@@ -219,17 +219,7 @@ TEST_CASE("beta-form linear specular: named stiff cases, and where it refuses `-
       run(c);
     }
   for (double len : {1e-6, 1e6})
-    for (double m : {0.0, 1e-12, 1.0, 2.5, 40.0, 1e4}) {
-      Config c;
-      c.name = len < 1 ? "tiny 1e-6" : "huge 1e6";
-      c.p = {0, 0, 0};
-      c.n = normalize(Vec3d{0.1, 0.2, 1});
-      c.q0 = {0.3 - len / 2, 0.2, 1};
-      c.q1 = {0.3 + len / 2, 0.2, 1};
-      c.rv = normalize(Vec3d{0.3, 0.2, 1});
-      c.shininess = m;
-      run(c);
-    }
+    for (double m : {0.0, 1e-12, 1.0, 2.5, 40.0, 1e4}) run(sized_light_case(len, m));
   MESSAGE("beta form on the named stiff cases: max rel.err where accepted ", t.worst, ", refused ", refused);
   CHECK(refused > 0);  // the short lights (far, tiny) are refused
 }

@@ -200,17 +200,7 @@ TEST_CASE("closed-form linear specular: named stiff cases through --specular exa
   }
   // Tiny and huge lights (length 1e-6 and 1e6 of the distance), Rv toward their middle.
   for (double len : {1e-6, 1e6}) {
-    for (double m : {0.0, 1e-12, 1.0, 40.0, 1e4}) {
-      Config c;
-      c.name = len < 1 ? "tiny 1e-6" : "huge 1e6";
-      c.p = {0, 0, 0};
-      c.n = normalize(Vec3d{0.1, 0.2, 1});
-      c.q0 = {0.3 - len / 2, 0.2, 1};
-      c.q1 = {0.3 + len / 2, 0.2, 1};
-      c.rv = normalize(Vec3d{0.3, 0.2, 1});
-      c.shininess = m;
-      run(c);
-    }
+    for (double m : {0.0, 1e-12, 1.0, 40.0, 1e4}) run(sized_light_case(len, m));
   }
   }
 }

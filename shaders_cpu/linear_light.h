@@ -38,21 +38,20 @@ namespace vlit {
 // The exact specular. With the inverse-square falloff (n = 2, the default): the recurrence of
 // linear_specular_closed.h for integer m <= kLinearRecurrenceMaxShininess, the incomplete-beta form
 // (linear_specular_beta.h, O(1) in m) for every other m >= 0, each where its rounding bound holds.
-// (Below that m the recurrence is the faster, and on the cases it refuses the adaptive form costs
-// less on average than Boost's incomplete beta: bench/linear_light_bench specular_exact_n2_*.)
+// (Below that m the recurrence is the faster; docs/linear-lights.md, bench/linear_light_bench
+// specular_exact_n2_*.)
 // n = 0: the recurrence for integer m <= kLinearClosedDispatchMaxShininess where its bound holds.
 // Everything they refuse, and other n: the adaptive form (linear_specular_exact.h).
 // n: the falloff exponent on the specular (0: none). Normalised (units of scale^-n).
 template <class A>
 A linear_specular_exact_dispatch(const LinearFrame<A>& fr, A m, A rel_tol, A n = A(0)) {
   const bool integer_m = m == std::floor(m) && m >= A(0);
-  if (n == A(2) && m >= A(0) && !(integer_m && m <= A(kLinearRecurrenceMaxShininess))) {
-    const LinearSpecularClosed<A> b = linear_specular_beta_frame(fr, m);
-    if (b.accepted) return b.value;
-  } else if (integer_m && m <= A(kLinearRecurrenceMaxShininess) && n == A(2)) {
-    const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m), 2);
+  if (n == A(2) && m >= A(0)) {
+    const LinearSpecularClosed<A> c = integer_m && m <= A(kLinearRecurrenceMaxShininess)
+                                          ? linear_specular_closed_frame(fr, int(m), 2)
+                                          : linear_specular_beta_frame(fr, m);
     if (c.accepted) return c.value;
-  } else if (integer_m && m <= A(kLinearClosedDispatchMaxShininess) && n == A(0)) {
+  } else if (n == A(0) && integer_m && m <= A(kLinearClosedDispatchMaxShininess)) {
     const LinearSpecularClosed<A> c = linear_specular_closed_frame(fr, int(m), 0);
     if (c.accepted) return c.value;
   }

@@ -16,8 +16,7 @@
 //   head H(ψ) = ∫_0^ψ cos^m = ½ B(sin²ψ; ½, q),   tail T(ψ) = ∫_ψ^(π/2) cos^m = ½ B(cos²ψ; q, ½),
 // and H + T = ½ B(½, q). Each is evaluated by Boost.Math (boost::math::beta(p, q, x) and its
 // complement betac) from the smaller of sin²ψ and cos²ψ, the argument the frame gives to full
-// relative accuracy (the other is 1 minus it; Boost is also 1.3-1.7x faster on it than on cos²ψ
-// for every end: bench/linear_light_bench beta_forced rows, measured once while choosing). Then:
+// relative accuracy (the other is 1 minus it). Then:
 //   - the ends on both sides of the lobe's axis (ψa <= 0 <= ψb): W = H(|ψa|) + H(ψb), a sum;
 //   - both on one side, near (smaller |ψ|) and far: W = H(far) - H(near) = T(near) - T(far), heads
 //     while the near end lies inside the lobe's median, tails beyond it (a highlight that misses
@@ -49,7 +48,8 @@
 //   a highlight 0.25 beyond the end of the light, m = 0 .. 1e4: max 2.0e-13; the named stiff cases
 //   at m = 0, 1e-12, 1, 2.5, 40, 1e4: max 1.3e-12 where accepted, 21 of 66 refused (far, tiny).
 // Cost (`./build/release/bench/linear_light_bench --benchmark_filter=run_engine/specular_exact_n2`,
-// per evaluation with the long-double frame): 0.7-1.4 us, independent of m; docs/linear-lights.md.
+// per evaluation with the long-double frame, rows *_beta_forced): 0.7-1.2 us at m = 10 .. 1e3;
+// docs/linear-lights.md.
 // Float: computed in double (LinearCompute), rounded once by the caller.
 #pragma once
 
@@ -81,7 +81,7 @@ inline constexpr double kLinearBetaRoundoff = 128;
 
 namespace linear_beta_detail {
 
-// Boost.Math in the caller's precision (no promotion of double to long double: 5-10x faster), and
+// Boost.Math in the caller's precision (no promotion of double to long double, Boost's default), and
 // no exceptions: an error gives a non-finite value, which the kernel refuses.
 using Policy = boost::math::policies::policy<
     boost::math::policies::promote_double<false>, boost::math::policies::promote_float<false>,

@@ -10,7 +10,8 @@
 //
 // Sources: standard Gauss-Legendre quadrature (nodes are the roots of P_n, found by Newton's
 // iteration in long double at first use; weights 2 / ((1 - x^2) P_n'(x)^2)). Our own code; no
-// quadrature library is used in the product (Boost.Math is used only by the tests).
+// quadrature library is used in the product (the tests integrate with Boost.Math's; the product
+// uses Boost.Math's incomplete beta function only, linear_specular_beta.h).
 //
 // No allocation: panels live in a fixed-size array on the stack (kMaxPanels). When it is full,
 // or a panel reaches kMaxDepth bisections, the panel is accepted as is (the error bound is then

@@ -273,7 +273,7 @@ LinearSections linear_report(const Options& o) {
     return [opt](const auto& x, std::size_t) { return shade_linear(x.light, x.sp, opt).specular; };
   };
   specular_method_rows(ss, o, sp, &stiff_s, "mean lobe near the peak (not the integral)", {1e-3, 1e-6, 1e-9, 1e-12},
-                       "K15 vs G7 over the segment", spec_with);
+                       "closed forms within their bounds, else K15 vs G7", spec_with);
   for (int order : {16, 64}) {
     const FixedRule rule = make_fixed_rule(order);
     auto gl = [&rule](const auto& x, std::size_t) {

@@ -27,7 +27,6 @@ struct LinearLobeInterval {
   A ra{0}, rb{0};      // sqrt(1 + x^2) = sec θ at both ends
   A ca{0}, cb{0};      // c = cos(θ - θ0) >= 0 at both ends
   A spa{0}, spb{0};    // sφ = sin(θ - θ0) at both ends
-  A theta_a{0}, theta_b{0}, theta0{0};
   A dx{0};             // x_b - x_a, from the clipped length (no cancellation)
   A dtheta{0};         // θ_b - θ_a = atan2(x_b - x_a, 1 + x_a x_b) (no cancellation)
 };
@@ -62,9 +61,6 @@ LinearLobeInterval<A> linear_lobe_interval(const LinearFrame<A>& fr) {
   r.cb = std::fmax((r.a + r.b * r.xb) / r.rb, A(0));
   r.spa = (r.a * r.xa - r.b) / r.ra;
   r.spb = (r.a * r.xb - r.b) / r.rb;
-  r.theta_a = std::atan(r.xa);
-  r.theta_b = std::atan(r.xb);
-  r.theta0 = std::atan2(r.b, r.a);
   r.dx = (tau_hi - tau_lo) / fr.h;
   r.dtheta = std::atan2(r.dx, A(1) + r.xa * r.xb);
   return r;

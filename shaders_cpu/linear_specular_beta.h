@@ -46,7 +46,7 @@
 //   the reference and 6.5e-14 against the adaptive form on the same frame (below m = 1 the lobe is
 //   a near-step at Rv.L = 0, whose position moves with the frame's rounding, for every method);
 //   a highlight 0.25 beyond the end of the light, m = 0 .. 1e4: max 2.0e-13; the named stiff cases
-//   at m = 0, 1e-12, 1, 2.5, 40, 1e4: max 1.3e-12 where accepted, 21 of 66 refused (far, tiny).
+//   at m = 0, 1e-12, 1, 2.5, 40, 1e4: max 1.3e-12 where accepted, 21 of 66 refused.
 // Cost (`./build/release/bench/linear_light_bench --benchmark_filter=run_engine/specular_exact_n2`,
 // per evaluation with the long-double frame, rows *_beta_forced): 0.7-1.2 us at m = 10 .. 1e3;
 // docs/linear-lights.md.
@@ -75,8 +75,8 @@ inline constexpr double kLinearBetaBound = 7.5e-13;
 // Relative error charged to each value, in units of eps: kLinearBetaRoundoff, and twice that plus m
 // for tails from sin²ψ (the complement betac(½, q, sin²ψ)). Measured against the long-double
 // evaluation on the same arguments (test "beta-form linear specular: the head and tail values within
-// their charges", which asserts half of each charge): within about 20 eps, except those tails:
-// about 510 eps at m ~ 5e3.
+// their charges", which asserts half of each charge and prints both maxima): heads within 22 eps,
+// tails within 509 eps.
 inline constexpr double kLinearBetaRoundoff = 128;
 
 namespace linear_beta_detail {
@@ -120,17 +120,7 @@ LinearSpecularClosed<A> linear_specular_beta_frame(const LinearFrame<A>& fr, A m
   namespace d = linear_beta_detail;
   LinearSpecularClosed<A> r;
   if (!(m >= A(0))) return r;
-  r.accepted = true;
-  if (fr.empty) return r;
-  if (fr.zero_length) {
-    r.value = fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, m) / (fr.mid_r * fr.mid_r) : A(0);
-    return r;
-  }
-  if (fr.on_segment) return r;  // ∫ ds / s² diverges at P: 0, as the diffuse
-  if (!(fr.h > A(0))) {         // collinear: refused (the adaptive form handles the constant direction)
-    r.accepted = false;
-    return r;
-  }
+  if (linear_specular_special_case(fr, m, 2, r)) return r;
   const LinearLobeInterval<A> li = linear_lobe_interval(fr);
   if (li.empty) return r;
   constexpr A eps = std::numeric_limits<A>::epsilon();

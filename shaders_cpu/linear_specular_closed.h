@@ -116,31 +116,42 @@ struct LinearSpecularClosed {
 // linear_specular_exact_frame (units of scale^-n). Always returns a value; `accepted` says whether
 // it is within the bound (callers fall back to linear_specular_exact_frame otherwise; always for
 // other n).
+// The frame's special cases, shared by the closed forms (falloff n = 0 or 2, real m >= 0): empty,
+// zero length (the point form), P on the segment (n = 2: ∫ ds / s² diverges at P; 0, as the
+// diffuse), collinear (refused: the adaptive form handles the constant direction). Returns true
+// when `r` holds the answer.
+template <class A>
+bool linear_specular_special_case(const LinearFrame<A>& fr, A m, int n, LinearSpecularClosed<A>& r) {
+  r.accepted = true;
+  if (fr.empty) return true;
+  if (fr.zero_length) {
+    r.value = fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, m) : A(0);
+    if (n == 2) r.value /= fr.mid_r * fr.mid_r;
+    return true;
+  }
+  if (fr.on_segment) {
+    r.value = n == 0 ? phong_power(linear_cos_rv(fr, fr.sb), m) * fr.delta / fr.ell : A(0);
+    return true;
+  }
+  if (!(fr.h > A(0))) {
+    r.accepted = false;
+    return true;
+  }
+  return false;
+}
+
 template <class A>
 LinearSpecularClosed<A> linear_specular_closed_frame(const LinearFrame<A>& fr, int m, int n = 0) {
   LinearSpecularClosed<A> r;
   if (n != 0 && n != 2) return r;
-  r.accepted = true;
-  if (fr.empty) return r;
   const A mm = A(m);
-  if (fr.zero_length) {
-    r.value = fr.mid_cos_n > A(0) ? phong_power(fr.mid_cos_rv, mm) : A(0);
-    if (n == 2) r.value /= fr.mid_r * fr.mid_r;
-    return r;
-  }
-  if (fr.on_segment) {  // n = 2: ∫ ds / s² diverges at P; 0, as the diffuse
-    r.value = n == 0 ? phong_power(linear_cos_rv(fr, fr.sb), mm) * fr.delta / fr.ell : A(0);
-    return r;
-  }
-  if (!(fr.h > A(0))) {  // collinear: refused (the adaptive form handles the constant direction)
-    r.accepted = false;
-    return r;
-  }
+  if (linear_specular_special_case(fr, mm, n, r)) return r;
   const LinearLobeInterval<A> li = linear_lobe_interval(fr);
   if (li.empty) return r;
   const A big_c = li.big_c, a = li.a, b = li.b, xa = li.xa, xb = li.xb, ra = li.ra, rb = li.rb;
-  const A ca = li.ca, cb = li.cb, spa = li.spa, spb = li.spb;
-  const A theta_a = li.theta_a, theta_b = li.theta_b, theta0 = li.theta0, dx = li.dx, dtheta = li.dtheta;
+  const A ca = li.ca, cb = li.cb, spa = li.spa, spb = li.spb, dx = li.dx, dtheta = li.dtheta;
+  // The angles of both ends and of the lobe's axis, for W_1's half-angle form.
+  const A theta_a = std::atan(xa), theta_b = std::atan(xb), theta0 = std::atan2(b, a);
   // [sqrt(1 + x^2)] = (x_b - x_a)(x_b + x_a) / (r_b + r_a): no cancellation.
   const A dsec = dx * (xb + xa) / (rb + ra);
   constexpr A eps = std::numeric_limits<A>::epsilon();

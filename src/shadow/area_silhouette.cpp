@@ -82,12 +82,12 @@ Vec3d crossing(const Vec3d& x, const Vec3d& y, const HalfSpace& h) {
 // +1: the triangle faces P (its projection is counter-clockwise), -1: it faces away, 0: it hides
 // nothing (is_occluder, or it touches P).
 int facing_of(const OccluderBvh& occluders, std::uint32_t t, const Vec3d& p, AreaSilhouetteScratch& s) {
-  if (s.facing_stamp[t] == s.stamp) return s.facing[t];
+  AreaSilhouetteScratch::Facing& cached = s.facing[t];
+  if (cached.stamp == s.stamp) return cached.facing;
   bool front = false;
   int f = 0;
   if (!touches(occluders.triangles().corners[t], p) && is_occluder(occluders, t, p, &front)) f = front ? 1 : -1;
-  s.facing_stamp[t] = s.stamp;
-  s.facing[t] = static_cast<std::int8_t>(f);
+  cached = {s.stamp, static_cast<std::int8_t>(f)};
   return f;
 }
 
@@ -287,7 +287,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   const ConvexVolume volume = area_shadow_volume(light, view, f.rect, p);
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
   if (clustered && cluster->leaves.size() <= SilhouetteCluster::kFlatLeaves) {
-    occluders.leaves_reached(cluster->leaves, volume, s.leaves);
+    occluders.leaves_reached(cluster->leaf_bounds, volume, s.leaves);
   } else if (clustered) {
     // P's own search, kept to the cluster's leaves: a leaf the cluster's search did not reach lies
     // outside the cluster's hull (so outside P's volume) or faces P uniformly.
@@ -310,13 +310,12 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
 
   const std::size_t triangle_count = occluders.triangles().size();
   if (s.facing.size() != triangle_count || s.edge_stamp.size() != occluders.edges().size()) {
-    s.facing.assign(triangle_count, 0);
-    s.facing_stamp.assign(triangle_count, 0);
+    s.facing.assign(triangle_count, {0, 0});
     s.edge_stamp.assign(occluders.edges().size(), 0);
     s.stamp = 0;
   }
   if (++s.stamp == 0) {  // wrapped: forget every stamp
-    std::fill(s.facing_stamp.begin(), s.facing_stamp.end(), 0);
+    std::fill(s.facing.begin(), s.facing.end(), AreaSilhouetteScratch::Facing{0, 0});
     std::fill(s.edge_stamp.begin(), s.edge_stamp.end(), 0);
     s.stamp = 1;
   }

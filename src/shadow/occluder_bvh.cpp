@@ -1,6 +1,7 @@
 #include "shadow/occluder_bvh.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace vlit {
@@ -108,6 +109,7 @@ struct UnitPlanes {
     for (const HalfSpace& h : planes)
       if (count < 16) plane[count++] = unit_plane(h);
   }
+  std::uint32_t all_bits() const { return (1u << count) - 1; }
 };
 
 // Bits of the planes proven to hold a node during a walk down the tree (OccluderBvh::visit_volume):
@@ -309,14 +311,16 @@ void OccluderBvh::build_cones() {
   // extent) with w = corner - origin: |w| <= |centre| + |origin| + radius and the extent is at most
   // 2 radius (max-norms); 1e-12 |centre| more covers the rounding of the centre itself.
   balls_.resize(nodes_.size());
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    const Aabb& box = nodes_[i].box;
-    Ball& ball = balls_[i];
-    ball.center = box.center();
-    ball.radius = 0.5 * length(box.hi - box.lo);
-    const double c = std::max({std::abs(ball.center.x), std::abs(ball.center.y), std::abs(ball.center.z)});
-    ball.margin = 2e-9 * (c + 3 * ball.radius) + 1e-12 * c;
-  }
+  for (std::size_t i = 0; i < nodes_.size(); ++i) balls_[i] = ball_of(nodes_[i].box);
+}
+
+OccluderBvh::Ball OccluderBvh::ball_of(const Aabb& box) {
+  Ball ball;
+  ball.center = box.center();
+  ball.radius = 0.5 * length(box.hi - box.lo);
+  const double c = std::max({std::abs(ball.center.x), std::abs(ball.center.y), std::abs(ball.center.z)});
+  ball.margin = 2e-9 * (c + 3 * ball.radius) + 1e-12 * c;
+  return ball;
 }
 
 // Where a node lies against a half-space (unit normal): decided by the ball that holds its box (one
@@ -433,11 +437,16 @@ void OccluderBvh::triangles_in_volume(const ConvexVolume& volume, const Vec3d& s
 
 bool OccluderBvh::near_volume(std::uint32_t tri, const ConvexVolume& volume, std::uint32_t held) const {
   const auto& c = triangles_.corners[tri];
-  for (std::size_t k = 0; k < volume.planes.size(); ++k) {
-    if (k < kSlabBit && (held >> k & 1u)) continue;
-    const HalfSpace& h = volume.planes[k];
-    if (h.signed_distance(c[0]) < 0 && h.signed_distance(c[1]) < 0 && h.signed_distance(c[2]) < 0) return false;
-  }
+  auto outside = [&](const HalfSpace& h) {
+    return h.signed_distance(c[0]) < 0 && h.signed_distance(c[1]) < 0 && h.signed_distance(c[2]) < 0;
+  };
+  // The planes that carry a bit and do not hold the leaf, lowest first; then those past the bits.
+  const std::size_t count = volume.planes.size();
+  const std::uint32_t with_bits = (1u << std::min<std::size_t>(count, kSlabBit)) - 1;
+  for (std::uint32_t untested = with_bits & ~held; untested != 0; untested &= untested - 1)
+    if (outside(volume.planes[std::countr_zero(untested)])) return false;
+  for (std::size_t k = kSlabBit; k < count; ++k)
+    if (outside(volume.planes[k])) return false;
   return box_of(c).overlaps(volume.box);
 }
 
@@ -483,23 +492,49 @@ void OccluderBvh::silhouette_leaves(const ConvexVolume& volume, const HalfSpace*
   });
 }
 
-void OccluderBvh::leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
+void OccluderBvh::leaf_bounds(const std::vector<std::uint32_t>& leaves, LeafBounds& out) const {
+  out.leaf.clear();
+  out.block.clear();
+  for (std::uint32_t leaf : leaves) out.leaf.push_back({nodes_[leaf].box, balls_[leaf]});
+  for (std::size_t begin = 0; begin < leaves.size(); begin += kLeafBlock) {
+    Aabb box;
+    for (std::size_t i = begin; i < std::min(begin + kLeafBlock, leaves.size()); ++i) box.grow(out.leaf[i].box);
+    out.block.push_back({box, ball_of(box)});
+  }
+}
+
+void OccluderBvh::leaves_reached(const LeafBounds& leaves, const ConvexVolume& volume,
                                  std::vector<std::uint32_t>& out) const {
   out.clear();
   const Aabb query = padded(volume.box);
   const UnitPlanes planes(volume.planes);  // as visit_volume
-  for (std::uint32_t i = 0; i < leaves.size(); ++i) {
-    const std::uint32_t leaf = leaves[i];
-    const Aabb& box = nodes_[leaf].box;
-    if (!box.overlaps(query)) continue;
-    // Wholly outside a plane: by the leaf's ball, or by its box where the ball crosses the plane.
-    const Ball& ball = balls_[leaf];
-    bool out_of_volume = false;
-    for (int k = 0; k < planes.count && !out_of_volume; ++k) {
-      const int side = ball_side(ball, planes.plane[k].h, planes.plane[k].origin_margin);
-      out_of_volume = side < 0 || (side == 0 && box_outside_unit(box, planes.plane[k].h));
+  for (std::size_t b = 0; b < leaves.block.size(); ++b) {
+    // A block's box and ball hold its leaves' boxes: a block wholly outside the query box or one
+    // plane holds no leaf the tests below would keep, and a plane that holds the block holds its
+    // leaves; the leaves are tested against the planes that straddle the block.
+    const Bounds& block = leaves.block[b];
+    if (!block.box.overlaps(query)) continue;
+    std::uint32_t straddled = 0;
+    bool block_out = false;
+    for (int k = 0; k < planes.count && !block_out; ++k) {
+      const int side = ball_side(block.ball, planes.plane[k].h, planes.plane[k].origin_margin);
+      block_out = side < 0;
+      if (side == 0) straddled |= 1u << k;
     }
-    if (!out_of_volume) out.push_back(i);
+    if (block_out) continue;
+    const std::size_t end = std::min((b + 1) * kLeafBlock, leaves.leaf.size());
+    for (std::size_t i = b * kLeafBlock; i < end; ++i) {
+      const Bounds& leaf = leaves.leaf[i];
+      if (!leaf.box.overlaps(query)) continue;
+      // Wholly outside a plane: by the leaf's ball, or by its box where the ball crosses the plane.
+      bool out_of_volume = false;
+      for (std::uint32_t untested = straddled; untested != 0 && !out_of_volume; untested &= untested - 1) {
+        const int k = std::countr_zero(untested);
+        const int side = ball_side(leaf.ball, planes.plane[k].h, planes.plane[k].origin_margin);
+        out_of_volume = side < 0 || (side == 0 && box_outside_unit(leaf.box, planes.plane[k].h));
+      }
+      if (!out_of_volume) out.push_back(static_cast<std::uint32_t>(i));
+    }
   }
 }
 
@@ -521,8 +556,8 @@ void OccluderBvh::visit_volume(const ConvexVolume& volume, const Prune& prune, c
     const Node& node = nodes_[e.node];
     if (!node.box.overlaps(query)) continue;
     bool out = false;
-    for (int k = 0; k < planes.count && !out; ++k) {
-      if (e.held >> k & 1u) continue;
+    for (std::uint32_t untested = planes.all_bits() & ~e.held; untested != 0 && !out; untested &= untested - 1) {
+      const int k = std::countr_zero(untested);
       const int side = side_of(e.node, planes.plane[k].h, planes.plane[k].origin_margin);
       out = side < 0;
       if (side > 0) e.held |= 1u << k;

@@ -71,13 +71,33 @@ class OccluderBvh {
                          double p_radius, std::vector<std::uint32_t>& leaves,
                          std::vector<std::uint32_t>* held_planes = nullptr) const;
 
-  // Of the given leaves (a cluster's, from silhouette_leaves), the positions i of those not wholly
-  // outside one of `volume`'s planes or its box. Ascending. Unlike the searches, it does not ask
-  // whether a leaf faces the vertex uniformly: a cluster lists only leaves with edges of non-zero
-  // weight over the cluster, of which few pass that test from one of its vertices, and reading a
-  // leaf that does costs little (its edges weigh 0 from there, and it leaves no chord).
-  void leaves_reached(const std::vector<std::uint32_t>& leaves, const ConvexVolume& volume,
-                      std::vector<std::uint32_t>& out) const;
+  // A ball that holds a box (its centre, half its diagonal), and the part of the margin of a test
+  // against a plane that does not depend on the plane (ball_side()).
+  struct Ball {
+    Vec3d center;
+    double radius = 0, margin = 0;
+  };
+  // The bounds of a cluster's leaves, copied where the vertices of the cluster read them in
+  // order (leaves_reached), and of runs of kLeafBlock consecutive leaves, so that leaves_reached
+  // decides a whole run with one test where it lies wholly outside one of the volume's planes or
+  // wholly inside all of them.
+  struct Bounds {
+    Aabb box;
+    Ball ball;
+  };
+  struct LeafBounds {
+    std::vector<Bounds> leaf, block;  // block b holds leaves [b kLeafBlock, (b + 1) kLeafBlock)
+  };
+  static constexpr std::size_t kLeafBlock = 8;
+  void leaf_bounds(const std::vector<std::uint32_t>& leaves, LeafBounds& out) const;
+
+  // Of a cluster's leaves (from silhouette_leaves; their bounds from leaf_bounds), the positions i
+  // of those not wholly outside one of `volume`'s planes or its box. Ascending. Unlike the
+  // searches, it does not ask whether a leaf faces the vertex uniformly: a cluster lists only
+  // leaves with edges of non-zero weight over the cluster, of which few pass that test from one of
+  // its vertices, and reading a leaf that does costs little (its edges weigh 0 from there, and it
+  // leaves no chord).
+  void leaves_reached(const LeafBounds& leaves, const ConvexVolume& volume, std::vector<std::uint32_t>& out) const;
 
   // A triangle's plane as the shadow tests read it (is_occluder, area_visibility.h; the normal
   // cones): n = cross(c1 - c0, c2 - c0), its length, and the triangle's longest edge squared.
@@ -120,12 +140,7 @@ class OccluderBvh {
     bool open = false;   // holds a triangle with an open edge
     int solid = -1;      // the closed solid all its triangles belong to, -1 for none, -2 if mixed
   };
-  // A ball that holds a node's box (its centre, half its diagonal), and the part of the margin of
-  // a test against a plane that does not depend on the plane (ball_side()).
-  struct Ball {
-    Vec3d center;
-    double radius = 0, margin = 0;
-  };
+  static Ball ball_of(const Aabb& box);
   // -1: the ball lies wholly outside h (unit normal) beyond its margin, 1: wholly inside, 0: neither.
   static int ball_side(const Ball& ball, const HalfSpace& h, double origin_margin);
   std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);

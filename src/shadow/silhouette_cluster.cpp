@@ -263,6 +263,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
     cluster.leaves[kept++] = cluster.leaves[i];
   }
   cluster.leaves.resize(kept);
+  occluders.leaf_bounds(cluster.leaves, cluster.leaf_bounds);
   cluster.edges_begin.push_back(static_cast<std::uint32_t>(cluster.weighed_edges.size()));
   cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_slots.size()));
 }

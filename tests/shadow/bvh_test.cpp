@@ -126,3 +126,50 @@ TEST_CASE("the silhouette search returns its triangles ascending, and flags only
   CHECK(flagged > 1000);
   CHECK(unflagged > 100);
 }
+
+TEST_CASE("leaves_reached: deciding runs of leaves by their block keeps exactly the leaves the leaf tests keep") {
+  std::vector<Tri> tris = random_soup(3000, 23);
+  const OccluderBvh bvh = make_bvh(tris);
+  const PreparedAreaLight<double> light = prepare_area_light(AreaLight<double>{square_light(1.5, 3), false});
+  // Every leaf of the tree: a search of a volume that holds everything, from a point so vague
+  // (radius 1e9) that no subtree faces it uniformly.
+  ConvexVolume everything;
+  for (const Tri& t : tris)
+    for (const Vec3d& c : t) everything.box.grow(c);
+  std::vector<std::uint32_t> leaves;
+  bvh.silhouette_leaves(everything, nullptr, 0, Vec3d{0, 0, 0}, 1e9, leaves);
+  REQUIRE(leaves.size() > 500);
+  OccluderBvh::LeafBounds bounds;
+  bvh.leaf_bounds(leaves, bounds);
+  REQUIRE(bounds.leaf.size() == leaves.size());
+  REQUIRE(bounds.block.size() == (leaves.size() + OccluderBvh::kLeafBlock - 1) / OccluderBvh::kLeafBlock);
+  // The same leaves with blocks that decide nothing (a ball far wider than the scene straddles
+  // every plane through it): each leaf is tested alone.
+  OccluderBvh::LeafBounds alone = bounds;
+  for (OccluderBvh::Bounds& block : alone.block) {
+    block.box = everything.box;
+    block.ball = {Vec3d{0, 0, 0}, 1e6, 0};
+  }
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> pos(-4, 4);
+  std::vector<std::uint32_t> by_blocks, by_leaves;
+  std::size_t kept = 0, dropped = 0;
+  for (int i = 0; i < 300; ++i) {
+    const Vec3d p{pos(rng), pos(rng), 0};
+    const ConvexVolume volume = volume_to_light(light, p);
+    bvh.leaves_reached(bounds, volume, by_blocks);
+    bvh.leaves_reached(alone, volume, by_leaves);
+    CHECK(by_blocks == by_leaves);
+    // No leaf with a triangle that reaches the volume is dropped.
+    for (std::size_t k = 0; k < leaves.size(); ++k) {
+      const auto [first, end] = bvh.leaf_triangles(leaves[k]);
+      bool reaches = false;
+      for (std::uint32_t t = first; t < end && !reaches; ++t) reaches = bvh.near_volume(t, volume);
+      if (reaches) CHECK(std::binary_search(by_blocks.begin(), by_blocks.end(), static_cast<std::uint32_t>(k)));
+    }
+    kept += by_blocks.size();
+    dropped += leaves.size() - by_blocks.size();
+  }
+  CHECK(kept > 30000);  // about 37 % of the leaves per point
+  CHECK(dropped > 30000);
+}

@@ -15,12 +15,13 @@
 // An edge whose incident triangles are all constant has the same weight from every point of B:
 // its weight is not computed again per vertex; an edge with a variable triangle is weighed per
 // vertex, from the planes of its triangles stored with the cluster (the lists a vertex reads are
-// the cluster's own arrays, in the order it reads them, not lookups into the scene's tables). A vertex of B keeps only the cluster's leaves that reach its own volume
-// (OccluderBvh::leaves_reached; its own search, which also skips leaves facing it uniformly, when
-// the cluster has many leaves) and in each of them reads only the
-// edges whose weight over B is not 0 and the triangles that may leave its slab; the rest of the
-// leaf adds nothing to its silhouette (an edge between two triangles that face B the same way
-// weighs 0 from every point of B).
+// the cluster's own arrays, in the order it reads them, not lookups into the scene's tables).
+// A vertex of B keeps only the cluster's leaves that reach its own volume (OccluderBvh::
+// leaves_reached, which reads the leaves' bounds from the cluster and decides runs of 8 leaves
+// at once where it can; its own search, which also skips leaves facing it uniformly, when the
+// cluster has many leaves) and in each of them reads only the edges whose weight over B is not 0
+// and the triangles that may leave its slab; the rest of the leaf adds nothing to its silhouette
+// (an edge between two triangles that face B the same way weighs 0 from every point of B).
 //
 // The candidates hold every triangle the per-vertex search could return for any vertex of B (a
 // superset, whose extra edges and chords clip to nothing in the vertex's pyramid or weigh 0;

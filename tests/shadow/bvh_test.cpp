@@ -33,6 +33,21 @@ ConvexVolume volume_to_light(const PreparedAreaLight<double>& light, const Vec3d
   return area_shadow_volume(light, view, horizon, p);
 }
 
+// Floor points at random in [-4, 4]^2 (drawn from rng), each with its volume to the light.
+struct FloorPoint {
+  Vec3d p;
+  ConvexVolume volume;
+};
+std::vector<FloorPoint> floor_points(const PreparedAreaLight<double>& light, int count, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> pos(-4, 4);
+  std::vector<FloorPoint> out;
+  for (int i = 0; i < count; ++i) {
+    const Vec3d p{pos(rng), pos(rng), 0};
+    out.push_back({p, volume_to_light(light, p)});
+  }
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("BVH and brute force agree on shadow rays and volume queries") {
@@ -53,9 +68,7 @@ TEST_CASE("BVH and brute force agree on shadow rays and volume queries") {
   const PreparedAreaLight<double> light = prepare_area_light(AreaLight<double>{square_light(1.5, 3), false});
   std::vector<std::uint32_t> a, b;
   std::size_t found = 0;
-  for (int i = 0; i < 200; ++i) {
-    const Vec3d p{pos(rng), pos(rng), 0};
-    const ConvexVolume volume = volume_to_light(light, p);
+  for (const auto& [p, volume] : floor_points(light, 200, rng)) {
     bvh.triangles_in_volume(volume, p, a);
     brute.triangles_in_volume(volume, p, b);
     CHECK(a == b);
@@ -98,13 +111,10 @@ TEST_CASE("the silhouette search returns its triangles ascending, and flags only
   const OccluderBvh bvh = make_bvh(tris), brute = make_bvh(tris, true);
   const PreparedAreaLight<double> light = prepare_area_light(AreaLight<double>{square_light(1.5, 3), false});
   std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> pos(-4, 4);
   std::vector<std::uint32_t> found, all;
   std::vector<std::uint8_t> in_slab, brute_in_slab;
   std::size_t flagged = 0, unflagged = 0;
-  for (int i = 0; i < 200; ++i) {
-    const Vec3d p{pos(rng), pos(rng), 0};
-    const ConvexVolume volume = volume_to_light(light, p);
+  for (const auto& [p, volume] : floor_points(light, 200, rng)) {
     const AreaSlab slab = area_slab(light, make_area_view(light, p), p);
     const HalfSpace inside[2] = {slab.beyond_light, slab.before_p};
     bvh.silhouette_candidates(volume, inside, 2, p, found, in_slab);
@@ -151,12 +161,9 @@ TEST_CASE("leaves_reached: deciding runs of leaves by their block keeps exactly 
     block.ball = {Vec3d{0, 0, 0}, 1e6, 0};
   }
   std::mt19937_64 rng(9);
-  std::uniform_real_distribution<double> pos(-4, 4);
   std::vector<std::uint32_t> by_blocks, by_leaves;
   std::size_t kept = 0, dropped = 0;
-  for (int i = 0; i < 300; ++i) {
-    const Vec3d p{pos(rng), pos(rng), 0};
-    const ConvexVolume volume = volume_to_light(light, p);
+  for (const auto& [p, volume] : floor_points(light, 300, rng)) {
     bvh.leaves_reached(bounds, volume, by_blocks);
     bvh.leaves_reached(alone, volume, by_leaves);
     CHECK(by_blocks == by_leaves);

@@ -464,15 +464,16 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     std::size_t next = 0;
     for (int k = 0; k < slabs; ++k) {
       const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
+      // The segments still open (the others ended: v1 is an event) and those starting here, each
+      // with its u at the slab's middle.
       std::size_t kept = 0;
-      for (const auto& entry : sorted)
-        if (seg[entry.second].v1 > lo) sorted[kept++] = entry;  // the others ended (v1 is an event)
+      for (const auto& [u, j] : sorted)
+        if (seg[j].v1 > lo) sorted[kept++] = {u_at(seg[j], mid), j};
       sorted.resize(kept);
       while (next < order.size() && seg[order[next]].v0 <= lo) {
-        if (seg[order[next]].v1 >= hi) sorted.push_back({0, order[next]});
-        ++next;
+        const int j = order[next++];
+        if (seg[j].v1 >= hi) sorted.push_back({u_at(seg[j], mid), j});
       }
-      for (auto& entry : sorted) entry.first = u_at(seg[entry.second], mid);
       for (std::size_t i = 1; i < sorted.size(); ++i)
         for (std::size_t j = i; j > 0 && sorted[j] < sorted[j - 1]; --j) std::swap(sorted[j], sorted[j - 1]);
       for (const auto& [u, j] : sorted) members.push_back(j);

@@ -263,7 +263,13 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
     cluster.leaves[kept++] = cluster.leaves[i];
   }
   cluster.leaves.resize(kept);
-  occluders.leaf_bounds(cluster.leaves, cluster.leaf_bounds);
+  // The vertices read the leaves' bounds only when they do not search the tree themselves.
+  if (cluster.leaves.size() <= SilhouetteCluster::kFlatLeaves) {
+    occluders.leaf_bounds(cluster.leaves, cluster.leaf_bounds);
+  } else {
+    cluster.leaf_bounds.leaf.clear();
+    cluster.leaf_bounds.block.clear();
+  }
   cluster.edges_begin.push_back(static_cast<std::uint32_t>(cluster.weighed_edges.size()));
   cluster.chords_begin.push_back(static_cast<std::uint32_t>(cluster.chord_slots.size()));
 }

@@ -50,7 +50,7 @@ struct SilhouetteCluster {
   // A facing or an edge weight that is not the same from every point of B.
   static constexpr int kVariable = 100;
   std::vector<std::uint32_t> leaves;  // the BVH leaves the cluster's search reached that hold an item (below)
-  OccluderBvh::LeafBounds leaf_bounds;  // of `leaves` (OccluderBvh::leaf_bounds)
+  OccluderBvh::LeafBounds leaf_bounds;  // of `leaves` (OccluderBvh::leaf_bounds), up to kFlatLeaves leaves
   // Scratch of prepare_silhouette_cluster: the triangles that may carry a silhouette edge or a
   // chord seen from some point of B, per leaf its search reached (before the leaves without items
   // are dropped from `leaves`): the i-th leaf's are [candidates_begin[i], candidates_begin[i + 1]).

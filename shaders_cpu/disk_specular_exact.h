@@ -99,76 +99,130 @@ bool rv_near_disk(const AreaView<R>& view, R radius, const Vec3<R>& n, const Vec
   return std::atan2(length(cross(rv, rim)), dot(rv, rim)) <= lobe_width;
 }
 
-// The boundary's curves and the integrand Rv.(x x dx/dt) lobe_per_azimuth(x) along them:
-// kind 0 = rim arc, t = theta; kind 1 = chord x = a + t e.
+// One curve of the boundary and the integrand Rv.(x x dx/dt) lobe_per_azimuth(x) along it:
+// kind 0 = rim arc, t = theta; kind 1 = straight segment x = a + t e (a relative to P).
+template <class R>
+struct DiskCurve {
+  int kind;
+  Vec3<R> a, e;
+};
+
+template <class R>
+R disk_curve_integrand(const AreaView<R>& view, R radius, const Vec3<R>& rv, R m, bool tail, const DiskCurve<R>& cv, R t) {
+  if (cv.kind == 1) return dot(rv, cross(cv.a, cv.e)) * area_exact_detail::lobe_per_azimuth(cv.a + cv.e * t, rv, m, tail);
+  const Vec3<R> e = view.u * std::cos(t) + view.v * std::sin(t), de = view.v * std::cos(t) - view.u * std::sin(t);
+  const Vec3<R> x = view.D + e * radius;
+  return dot(rv, cross(x, de * radius)) * area_exact_detail::lobe_per_azimuth(x, rv, m, tail);
+}
+
+// The open disk's boundary: at most 4 rim arcs and 2 chords.
 template <class R>
 struct DiskContour {
-  struct Curve { int kind; Vec3<R> a, e; };
   const AreaView<R>& view;
   R radius;
   Vec3<R> rv;
   R m;
   bool tail;
-  std::array<Curve, 8> curves{};
+  std::array<DiskCurve<R>, 8> curves{};
   int count = 0;
 
-  R operator()(int c, R t) const {
-    const Curve& cv = curves[c];
-    if (cv.kind == 1) return dot(rv, cross(cv.a, cv.e)) * area_exact_detail::lobe_per_azimuth(cv.a + cv.e * t, rv, m, tail);
-    const Vec3<R> e = view.u * std::cos(t) + view.v * std::sin(t), de = view.v * std::cos(t) - view.u * std::sin(t);
-    const Vec3<R> x = view.D + e * radius;
-    return dot(rv, cross(x, de * radius)) * area_exact_detail::lobe_per_azimuth(x, rv, m, tail);
-  }
+  R operator()(int c, R t) const { return disk_curve_integrand(view, radius, rv, m, tail, curves[c], t); }
 };
 
+// Where the integrand along the rim peaks: the rim angle nearest the foot of P (width ~ its
+// distance, in radians of rim angle) and, for m > 0, the rim angle nearest the lobe's axis (its
+// hit point on the plane; width ~ the lobe's).
+template <class R>
+struct RimCuts {
+  R foot_theta{0}, foot_width{0}, lobe_theta{0}, lobe_width{0};
+};
+
+template <class R>
+RimCuts<R> rim_cuts(const AreaView<R>& view, R radius, const Vec3<R>& rv, R m, R lobe_width) {
+  RimCuts<R> cuts;
+  const R du = dot(view.D, view.u), dv = dot(view.D, view.v);
+  cuts.foot_theta = std::atan2(-dv, -du);
+  cuts.foot_width = std::hypot(view.height, std::hypot(du, dv) - radius) / radius;
+  cuts.lobe_theta = cuts.foot_theta;
+  const R toward = -dot(view.normal, rv);
+  if (m > R(0) && toward > R(0)) {
+    const Vec3<R> hit = rv * (view.height / toward) - view.D;  // relative to the centre
+    cuts.lobe_theta = std::atan2(dot(hit, view.v), dot(hit, view.u));
+    cuts.lobe_width = lobe_width *
+                      length(view.D + (view.u * std::cos(cuts.lobe_theta) + view.v * std::sin(cuts.lobe_theta)) * radius) /
+                      radius;
+  }
+  return cuts;
+}
+
+// Adds the rim arc [t0, t1] (curve c of f) to the integrator, cut around the peaks of `cuts`.
+template <class R, class F, class Quad>
+void add_rim_arc(const F& f, int c, R t0, R t1, const RimCuts<R>& cuts, R m, Quad& quad) {
+  const R pi = R(M_PI);
+  // centres shifted by 2 pi into [t0, t1] where needed
+  auto shift = [&](R t) { while (t < t0) t += R(2) * pi; while (t > t0 + R(2) * pi) t -= R(2) * pi; return t; };
+  const R centers[4] = {shift(cuts.foot_theta), shift(cuts.foot_theta) - R(2) * pi, shift(cuts.lobe_theta),
+                        shift(cuts.lobe_theta) - R(2) * pi};
+  const R widths[4] = {cuts.foot_width, cuts.foot_width, cuts.lobe_width, cuts.lobe_width};
+  quad.template add_graded<kDiskExactMaxCuts>(f, c, t0, t1, centers, widths, m > R(0) ? 4 : 2, R(1));
+}
+
+// Adds the straight segment x = a + t e, t in [s0, s1] (curve c of f; a relative to P), cut around
+// the point nearest P and the point nearest in angle to Rv.
+template <class R, class F, class Quad>
+void add_straight(const F& f, int c, const Vec3<R>& a, const Vec3<R>& e, R s0, R s1, const Vec3<R>& rv, R m,
+                  R lobe_width, Quad& quad) {
+  const R e2 = length_squared(e), len = std::sqrt(e2);
+  const R tp = std::clamp(-dot(a, e) / e2, s0, s1);
+  R centers[2] = {tp, tp}, widths[2] = {length(a + e * tp) / len, R(0)};
+  if (m > R(0)) {
+    const Vec3<R> cr = cross(a, e);
+    const R lc = length(cr);
+    if (lc > R(0)) {
+      const Vec3<R> pole = cr / lc;
+      const Vec3<R> wdir = rv - pole * dot(rv, pole);
+      const R den = dot(cross(e, wdir), pole);
+      if (den != R(0)) {
+        centers[1] = std::clamp(-dot(cross(a, wdir), pole) / den, s0, s1);
+        const Vec3<R> xr = a + e * centers[1];
+        const R angle = std::atan2(length(cross(rv, xr)), dot(rv, xr));
+        widths[1] = std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len;
+      }
+    }
+  }
+  quad.template add_graded<kDiskExactMaxCuts>(f, c, s0, s1, centers, widths, 2, R(1));
+}
+
 // The rim arcs between consecutive crossings (cyclically; the whole rim if there are none) whose
-// midpoint is visible, cut around the rim angle nearest the foot of P and, for m > 0, nearest the
-// lobe's axis (its hit point on the plane).
+// midpoint is visible.
 template <class R, class Quad>
 void add_rim_arcs(DiskContour<R>& contour, DiskClip<R>& clip, R lobe_width, Quad& quad) {
-  const AreaView<R>& view = contour.view;
-  const R radius = contour.radius, m = contour.m, pi = R(M_PI);
-  const R du = dot(view.D, view.u), dv = dot(view.D, view.v);
-  const R foot_theta = std::atan2(-dv, -du);
-  const R rim_dist = std::hypot(view.height, std::hypot(du, dv) - radius);
-  R lobe_theta = foot_theta, lobe_w = R(0);
-  const R toward = -dot(view.normal, contour.rv);
-  if (m > R(0) && toward > R(0)) {
-    const Vec3<R> hit = contour.rv * (view.height / toward) - view.D;  // relative to the centre
-    lobe_theta = std::atan2(dot(hit, view.v), dot(hit, view.u));
-    lobe_w = lobe_width * length(view.D + (view.u * std::cos(lobe_theta) + view.v * std::sin(lobe_theta)) * radius) / radius;
-  }
+  const R radius = contour.radius, pi = R(M_PI);
+  const RimCuts<R> cuts = rim_cuts(contour.view, radius, contour.rv, contour.m, lobe_width);
   // At most 4 crossings: insertion sort (std::sort's 16-element threshold made GCC 12 warn of
   // out-of-bounds access on this 4-element array, a false positive).
   auto& breaks = clip.breaks;
   const int nb = clip.nb;
   for (int i = 1; i < nb; ++i)
     for (int j = i; j > 0 && breaks[j] < breaks[j - 1]; --j) std::swap(breaks[j], breaks[j - 1]);
-  const auto f = [&](int c) { return [&contour, c](R t) { return contour(c, t); }; };
   for (int i = 0; i < std::max(nb, 1); ++i) {
-    const R t0 = nb == 0 ? foot_theta - pi : breaks[i];
-    const R t1 = nb == 0 ? foot_theta + pi : (i + 1 < nb ? breaks[i + 1] : breaks[0] + R(2) * pi);
+    const R t0 = nb == 0 ? cuts.foot_theta - pi : breaks[i];
+    const R t1 = nb == 0 ? cuts.foot_theta + pi : (i + 1 < nb ? breaks[i + 1] : breaks[0] + R(2) * pi);
     if (!(t1 > t0)) continue;
     const R mid = (t0 + t1) / 2;
     if (!clip.inside(radius * std::cos(mid), radius * std::sin(mid))) continue;
     const int c = contour.count++;
     contour.curves[c] = {0, {}, {}};
-    // centres shifted by 2 pi into [t0, t1] where needed
-    auto shift = [&](R t) { while (t < t0) t += R(2) * pi; while (t > t0 + R(2) * pi) t -= R(2) * pi; return t; };
-    const R centers[4] = {shift(foot_theta), shift(foot_theta) - R(2) * pi, shift(lobe_theta), shift(lobe_theta) - R(2) * pi};
-    const R widths[4] = {rim_dist / radius, rim_dist / radius, lobe_w, lobe_w};
-    quad.template add_graded<kDiskExactMaxCuts>(f(c), c, t0, t1, centers, widths, m > R(0) ? 4 : 2, R(1));
+    add_rim_arc([&contour, c](R t) { return contour(c, t); }, c, t0, t1, cuts, contour.m, quad);
   }
 }
 
 // The chords: each line from its crossing at theta_k + omega_k back to theta_k - omega_k (region
-// on the left), clipped to the other half-space, cut around the point nearest P and the point
-// nearest in angle to Rv.
+// on the left), clipped to the other half-space.
 template <class R, class Quad>
 void add_chords(DiskContour<R>& contour, const DiskClip<R>& clip, R lobe_width, Quad& quad) {
   const AreaView<R>& view = contour.view;
   const R radius = contour.radius;
-  const Vec3<R>& rv = contour.rv;
   for (int k = 0; k < clip.nl; ++k) {
     if (!clip.has_chord[k]) continue;
     const R ax = radius * std::cos(clip.chord_hi[k]), ay = radius * std::sin(clip.chord_hi[k]);
@@ -188,26 +242,7 @@ void add_chords(DiskContour<R>& contour, const DiskClip<R>& clip, R lobe_width, 
     const Vec3<R> a = view.D + pa, e = pb - pa;
     const int c = contour.count++;
     contour.curves[c] = {1, a, e};
-    const R e2 = length_squared(e), len = std::sqrt(e2);
-    const R tp = std::clamp(-dot(a, e) / e2, s0, s1);
-    R centers[2] = {tp, tp}, widths[2] = {length(a + e * tp) / len, R(0)};
-    if (contour.m > R(0)) {
-      const Vec3<R> cr = cross(a, e);
-      const R lc = length(cr);
-      if (lc > R(0)) {
-        const Vec3<R> pole = cr / lc;
-        const Vec3<R> wdir = rv - pole * dot(rv, pole);
-        const R den = dot(cross(e, wdir), pole);
-        if (den != R(0)) {
-          centers[1] = std::clamp(-dot(cross(a, wdir), pole) / den, s0, s1);
-          const Vec3<R> xr = a + e * centers[1];
-          const R angle = std::atan2(length(cross(rv, xr)), dot(rv, xr));
-          widths[1] = std::max(std::min(lobe_width, angle), R(1e-300)) * length(xr) / len;
-        }
-      }
-    }
-    quad.template add_graded<kDiskExactMaxCuts>([&contour, c](R t) { return contour(c, t); }, c, s0, s1, centers,
-                                                widths, 2, R(1));
+    add_straight([&contour, c](R t) { return contour(c, t); }, c, a, e, s0, s1, contour.rv, contour.m, lobe_width, quad);
   }
 }
 

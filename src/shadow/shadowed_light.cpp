@@ -98,8 +98,8 @@ Response<double> shade_linear_shadowed(const LinearLight<double>& light, const S
 // The light's visible pieces, each evaluated with the area kernels; `unoccluded()` when no
 // occluder reaches between P and the light.
 // For a disk (`disk` not null), `light` is its circumscribed polygon: each visible piece is
-// intersected with the disk for the diffuse (disk_pieces.h), and with the disk's equal-area
-// polygon for the specular methods.
+// intersected with the disk for the diffuse and the exact specular (disk_pieces.h), and with the
+// disk's equal-area polygon for the peak and neighbourhood specular.
 template <class Unoccluded>
 Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, const ShadingPoint<double>& sp,
                                      const ShadeOptions& options, const OccluderBvh& occluders,
@@ -159,9 +159,10 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     std::copy(from.points.begin() + from.start[i], from.points.begin() + from.start[i + 1], piece.d.begin());
     return piece;
   };
-  // The pieces the specular methods read: a disk's, clipped once to its equal-area polygon.
+  // The pieces the peak and neighbourhood methods read: a disk's, clipped once to its equal-area
+  // polygon.
   const LightPieces* lobe_pieces = &pieces;
-  if (disk && spec.method != SpecularMethod::kNone) {
+  if (disk && (spec.method == SpecularMethod::kPeak || spec.method == SpecularMethod::kNeighborhood)) {
     thread_local LightPieces clipped;
     clipped.clear();
     ClipPolygon<double> inside;
@@ -183,7 +184,9 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     for (std::size_t i = 0; i < lobe_pieces->size(); ++i) {
       const ClipPolygon<double>& lobe_piece = load(*lobe_pieces, i);
       if (spec.method == SpecularMethod::kExact) {
-        r.specular += area_specular_exact_dispatch(lobe_piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
+        r.specular += disk ? disk_piece_specular_exact(view, disk->radius, sp.n, sp.rv, sp.shininess,
+                                                       spec.exact_tolerance, lobe_piece)
+                           : area_specular_exact_dispatch(lobe_piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
       } else {
         const AreaPeak<double> peak = area_specular_peak_direction(lobe_piece, view, sp.rv);
         if (peak.visible && peak.angle < best.angle) best = peak;

@@ -423,15 +423,20 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   for (const auto& [v, w] : s.left_steps) add_event(v);
   {
     // The segments whose v-range is still open, with what the cheap tests read.
+    // Segments that ended stay in the list (skipped) until they are a quarter of it: dropping
+    // them at every insertion rewrote the whole list each time. (The segments come in order of
+    // v0, so one that ended before this one's start has ended for every later one.)
     std::vector<AreaSilhouetteScratch::Active>& active = s.active;
     active.clear();
     for (int i : order) {
       const SilhouetteSegment& a = seg[i];
       const double a_lo = std::min(a.u0, a.u1), a_hi = std::max(a.u0, a.u1);
-      std::size_t kept = 0;
+      std::size_t ended = 0;
       for (const AreaSilhouetteScratch::Active& entry : active) {
-        if (entry.v1 <= a.v0) continue;
-        active[kept++] = entry;
+        if (entry.v1 <= a.v0) {
+          ++ended;
+          continue;
+        }
         if (a_hi < entry.u_lo || entry.u_hi < a_lo) continue;
         const SilhouetteSegment& b = seg[entry.index];
         // A proper crossing: b's ends strictly on both sides of a, and a's of b.
@@ -440,7 +445,8 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
         const double o1 = orient2(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0), o2 = orient2(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1);
         add_event(b.v0 + (b.v1 - b.v0) * (o1 / (o1 - o2)));
       }
-      active.resize(kept);
+      if (4 * ended > active.size())
+        std::erase_if(active, [&](const AreaSilhouetteScratch::Active& entry) { return entry.v1 <= a.v0; });
       active.push_back({a.v1, a_lo, a_hi, i});
     }
   }

@@ -23,25 +23,35 @@ PreparedLight<double> overhead_disk() { return prepare_light<double>(disk_source
 
 ShadeOptions diffuse_only() { return options_with(SpecularMethod::kNone); }
 
+// A square occluder at height 1.2 between P and the disk, and its projection from P onto the
+// disk's plane (a light facing down, of the disk's radiance).
+struct HiddenSquare {
+  OccluderBvh bvh;
+  std::vector<Vec3d> shadow;
+};
+
+HiddenSquare hidden_square(const Vec3d& p) {
+  const double z0 = 1.2, half = 0.05;
+  const Vec3d middle = p + (Vec3d{0.1, 0.05, kHeight} - p) * ((z0 - p.z) / (kHeight - p.z));
+  std::vector<Tri> tris;
+  add_quad(tris, middle + Vec3d{-half, -half, 0}, {2 * half, 0, 0}, {0, 2 * half, 0});
+  HiddenSquare h{make_bvh(tris), {}};
+  for (const Vec3d& corner : {Vec3d{-half, -half, 0}, Vec3d{-half, half, 0}, Vec3d{half, half, 0}, Vec3d{half, -half, 0}})
+    h.shadow.push_back(p + (middle + corner - p) * ((kHeight - p.z) / (z0 - p.z)));
+  return h;
+}
+
 }  // namespace
 
 TEST_CASE("a shadowed disk: a small square hidden in its middle takes exactly that square's light away") {
-  // A square occluder at height z0 whose projection from P onto the disk's plane lies inside the
+  // A square occluder (hidden_square) whose projection from P onto the disk's plane lies inside the
   // disk: the visible part is the disk minus that projected square, so the value is the open disk's
   // minus the square's own light (a polygon light of the same radiance). The visible pieces the
   // silhouettes make reach the rim, so their arcs carry the result.
   for (const Vec3d p : {Vec3d{0, 0, 0}, Vec3d{0.3, -0.2, 0}, Vec3d{-0.6, 0.1, 0.5}}) {
     CAPTURE(p);
     const ShadingPoint<double> sp = make_shading_point(p, Vec3d{0, 0, 1}, Vec3d{0, 0, 5}, 10.0);
-    const double z0 = 1.2, half = 0.05;
-    const Vec3d middle = p + (Vec3d{0.1, 0.05, kHeight} - p) * ((z0 - p.z) / (kHeight - p.z));
-    std::vector<Tri> tris;
-    add_quad(tris, middle + Vec3d{-half, -half, 0}, {2 * half, 0, 0}, {0, 2 * half, 0});
-    const OccluderBvh bvh = make_bvh(tris);
-    // The square's projection onto z = kHeight, as a light facing down.
-    std::vector<Vec3d> shadow;
-    for (const Vec3d& corner : {Vec3d{-half, -half, 0}, Vec3d{-half, half, 0}, Vec3d{half, half, 0}, Vec3d{half, -half, 0}})
-      shadow.push_back(p + (middle + corner - p) * ((kHeight - p.z) / (z0 - p.z)));
+    const auto [bvh, shadow] = hidden_square(p);
     for (const Vec3d& x : shadow) REQUIRE(std::hypot(x.x, x.y) < kRadius);
     const double open = shade(overhead_disk(), sp, diffuse_only()).diffuse;
     const double square = shade(prepare_light<double>(area_source(shadow)), sp, diffuse_only()).diffuse;
@@ -115,14 +125,7 @@ TEST_CASE("a shadowed disk's exact specular: a small square hidden in its middle
         CAPTURE(eye);
         CAPTURE(m);
         const ShadingPoint<double> sp = make_shading_point(p, Vec3d{0, 0, 1}, eye, m);
-        const double z0 = 1.2, half = 0.05;
-        const Vec3d middle = p + (Vec3d{0.1, 0.05, kHeight} - p) * ((z0 - p.z) / (kHeight - p.z));
-        std::vector<Tri> tris;
-        add_quad(tris, middle + Vec3d{-half, -half, 0}, {2 * half, 0, 0}, {0, 2 * half, 0});
-        const OccluderBvh bvh = make_bvh(tris);
-        std::vector<Vec3d> shadow;
-        for (const Vec3d& corner : {Vec3d{-half, -half, 0}, Vec3d{-half, half, 0}, Vec3d{half, half, 0}, Vec3d{half, -half, 0}})
-          shadow.push_back(p + (middle + corner - p) * ((kHeight - p.z) / (z0 - p.z)));
+        const auto [bvh, shadow] = hidden_square(p);
         const double open = shade(overhead_disk(), sp, exact).specular;
         const double square = shade(prepare_light<double>(area_source(shadow)), sp, exact).specular;
         const Vec3d hit = p + sp.rv * ((kHeight - p.z) / sp.rv.z);

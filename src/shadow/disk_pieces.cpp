@@ -107,7 +107,6 @@ double edge_term(const AreaView<double>& view, const Vec3d& n, const Point2& a, 
   return len > 0 ? std::atan2(len, dot(ra, rb)) / len * dot(n, cr) : 0.0;
 }
 
-
 // piece ∩ disk as the counter-clockwise boundary of its rim arcs and straight segments, from its
 // counter-clockwise corners.
 void piece_in_disk(double radius, const Point2* corner, int count, std::vector<Element>& boundary) {

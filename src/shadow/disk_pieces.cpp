@@ -5,7 +5,6 @@
 
 #include "area_light.h"
 #include "disk_diffuse_contour.h"
-#include "disk_specular_exact.h"
 
 namespace vlit {
 namespace {
@@ -134,70 +133,93 @@ bool corners_in_disk(const Point2* corner, int count, double radius) {
 
 }  // namespace
 
-double disk_piece_diffuse(const AreaView<double>& view, const DiskFrame<double>& frame, const Vec3d& n,
-                          const ClipPolygon<double>& piece) {
-  if (!view.lit || piece.count < 3) return 0;
+DiskPieceLobe disk_piece_lobe(const AreaView<double>& view, double radius, const Vec3d& n, const Vec3d& rv, double m,
+                              double tolerance) {
+  DiskPieceLobe lobe;
+  lobe.rv = normalize(rv);
+  lobe.m = m;
+  lobe.tolerance = tolerance;
+  // The lobe's half-space Rv.(x - P) >= 0, also for m = 0 (its limit m -> 0+), as a line in the
+  // disk's plane: (Rv.u) x + (Rv.v) y >= -Rv.D.
+  const double lx = dot(lobe.rv, view.u), ly = dot(lobe.rv, view.v), lc = -dot(lobe.rv, view.D), ll = std::hypot(lx, ly);
+  lobe.clips = ll > 0;
+  if (lobe.clips) {
+    lobe.nx = lx / ll;
+    lobe.ny = ly / ll;
+    lobe.c = lc / ll;
+  }
+  lobe.misses = !lobe.clips && lc > 0;
+  // Rv outside the visible part: integrate only the tail c^{m+1} (area_specular_exact.h). Decided
+  // on the whole disk, as disk_specular_exact does: the full form holds wherever Rv is.
+  lobe.lobe_width = 1 / std::sqrt(m + 1);
+  lobe.tail = m > 0 && !disk_exact_detail::rv_near_disk(view, radius, n, lobe.rv, lobe.lobe_width);
+  lobe.cuts = disk_exact_detail::rim_cuts(view, radius, lobe.rv, m, lobe.lobe_width);
+  return lobe;
+}
+
+namespace {
+
+// The exact specular of the region inside `boundary` (piece ∩ disk).
+double boundary_specular(const AreaView<double>& view, double radius, const DiskPieceLobe& lobe,
+                         std::vector<Element>& boundary) {
+  using namespace disk_exact_detail;
+  if (lobe.misses) return 0;
+  if (lobe.clips) {
+    thread_local std::vector<Element> lobe_side;
+    clip(boundary, radius, lobe.nx, lobe.ny, lobe.c, lobe_side);
+    boundary.swap(lobe_side);
+  }
+  if (boundary.empty()) return 0;
+  const Vec3d& rv = lobe.rv;
+  const double m = lobe.m;
+  thread_local std::vector<DiskCurve<double>> curves;
+  curves.clear();
+  const auto integrand = [&](int c, double t) {
+    return disk_curve_integrand(view, radius, rv, m, lobe.tail, curves[c], t);
+  };
+  AdaptiveKronrod<double, kDiskExactMaxPieces> quad;
+  for (const Element& e : boundary) {
+    const int c = int(curves.size());
+    const auto along = [&integrand, c](double t) { return integrand(c, t); };
+    if (e.arc) {
+      curves.push_back({0, {}, {}});
+      add_rim_arc(along, c, e.a0, e.a1, lobe.cuts, m, quad);
+    } else {
+      const Vec3d a = view.D + view.u * e.p0.x + view.v * e.p0.y;
+      const Vec3d along_edge = view.u * (e.p1.x - e.p0.x) + view.v * (e.p1.y - e.p0.y);
+      if (!(length_squared(along_edge) > 0)) continue;
+      curves.push_back({1, a, along_edge});
+      add_straight(along, c, a, along_edge, 0.0, 1.0, rv, m, lobe.lobe_width, quad);
+    }
+  }
+  const double value = quad.refine(integrand, [](int) { return 1.0; }, lobe.tolerance);
+  return std::max(lobe.tail ? value / (m + 1) : -value / (m + 1), 0.0);
+}
+
+}  // namespace
+
+DiskPieceLight disk_piece_light(const AreaView<double>& view, const DiskFrame<double>& frame, const Vec3d& n,
+                                const DiskPieceLobe* lobe, const ClipPolygon<double>& piece) {
+  DiskPieceLight r;
+  if (!view.lit || piece.count < 3) return r;
   const double radius = frame.big_r;
   std::array<Point2, kMaxClipVertices> corner;
   const int count = corners_ccw(piece, view, corner.data());
   double sum = 0;
   if (corners_in_disk(corner.data(), count, radius)) {  // the piece lies in the disk: its own edges
     for (int i = 0; i < count; ++i) sum += edge_term(view, n, corner[i], corner[(i + 1) % count]);
-    return std::max(0.0, -0.5 * sum);
+    r.diffuse = std::max(0.0, -0.5 * sum);
+    // A polygon light of its own (its corners lie above P's horizon).
+    if (lobe) r.specular = area_specular_exact_dispatch(piece, view, lobe->rv, lobe->m, lobe->tolerance);
+    return r;
   }
   thread_local std::vector<Element> boundary;
   piece_in_disk(radius, corner.data(), count, boundary);
   for (const Element& e : boundary)
     sum += e.arc ? disk_arc_contour(view, frame, e.a0, e.a1, 0.5 * (e.a1 - e.a0)) : edge_term(view, n, e.p0, e.p1);
-  return std::max(0.0, -0.5 * sum);
-}
-
-double disk_piece_specular_exact(const AreaView<double>& view, double radius, const Vec3d& n, const Vec3d& rv_in,
-                                 double m, double tolerance, const ClipPolygon<double>& piece) {
-  using namespace disk_exact_detail;
-  if (!view.lit || piece.count < 3) return 0;
-  std::array<Point2, kMaxClipVertices> corner;
-  const int count = corners_ccw(piece, view, corner.data());
-  // A piece inside the disk is a polygon light of its own (its corners lie above P's horizon).
-  if (corners_in_disk(corner.data(), count, radius)) return area_specular_exact_dispatch(piece, view, rv_in, m, tolerance);
-  thread_local std::vector<Element> boundary, lobe_side;
-  piece_in_disk(radius, corner.data(), count, boundary);
-  // The lobe's half-space Rv.(x - P) >= 0, also for m = 0 (its limit m -> 0+), as a line in the
-  // disk's plane: (Rv.u) x + (Rv.v) y >= -Rv.D.
-  const Vec3d rv = normalize(rv_in);
-  const double lx = dot(rv, view.u), ly = dot(rv, view.v), lc = -dot(rv, view.D), ll = std::hypot(lx, ly);
-  if (ll > 0) {
-    clip(boundary, radius, lx / ll, ly / ll, lc / ll, lobe_side);
-    boundary.swap(lobe_side);
-  } else if (lc > 0) {
-    return 0;  // Rv along the disk's normal, pointing away from it: the lobe misses the plane
-  }
-  if (boundary.empty()) return 0;
-  // Rv outside the visible part: integrate only the tail c^{m+1} (area_specular_exact.h). Decided on
-  // the whole disk, as disk_specular_exact does: the full form holds wherever Rv is.
-  const double lobe_width = 1 / std::sqrt(m + 1);
-  const bool tail = m > 0 && !rv_near_disk(view, radius, n, rv, lobe_width);
-  thread_local std::vector<DiskCurve<double>> curves;
-  curves.clear();
-  const auto integrand = [&](int c, double t) { return disk_curve_integrand(view, radius, rv, m, tail, curves[c], t); };
-  AdaptiveKronrod<double, kDiskExactMaxPieces> quad;
-  const RimCuts<double> cuts = rim_cuts(view, radius, rv, m, lobe_width);
-  for (const Element& e : boundary) {
-    const int c = int(curves.size());
-    const auto along = [&integrand, c](double t) { return integrand(c, t); };
-    if (e.arc) {
-      curves.push_back({0, {}, {}});
-      add_rim_arc(along, c, e.a0, e.a1, cuts, m, quad);
-    } else {
-      const Vec3d a = view.D + view.u * e.p0.x + view.v * e.p0.y;
-      const Vec3d along_edge = view.u * (e.p1.x - e.p0.x) + view.v * (e.p1.y - e.p0.y);
-      if (!(length_squared(along_edge) > 0)) continue;
-      curves.push_back({1, a, along_edge});
-      add_straight(along, c, a, along_edge, 0.0, 1.0, rv, m, lobe_width, quad);
-    }
-  }
-  const double value = quad.refine(integrand, [](int) { return 1.0; }, tolerance);
-  return std::max(tail ? value / (m + 1) : -value / (m + 1), 0.0);
+  r.diffuse = std::max(0.0, -0.5 * sum);
+  if (lobe) r.specular = boundary_specular(view, radius, *lobe, boundary);
+  return r;
 }
 
 void clip_piece_to_polygon(const ClipPolygon<double>& piece, const PreparedAreaLight<double>& polygon,

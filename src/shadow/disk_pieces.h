@@ -19,23 +19,43 @@
 #include "area_polygon.h"
 #include "disk_diffuse_contour.h"
 #include "disk_light.h"
+#include "disk_specular_exact.h"
 
 namespace vlit {
 
-// The diffuse (unit intensity, kd = 1) of piece ∩ disk. `view` is the disk's view from P (the
-// frame of disk.inscribed and disk.circumscribed), `piece` a convex polygon relative to the
-// disk's centre in the disk's plane, above P's horizon.
-// `frame` is disk_frame(view, radius, n), the same for every piece seen from P.
-double disk_piece_diffuse(const AreaView<double>& view, const DiskFrame<double>& frame, const Vec3d& n,
-                          const ClipPolygon<double>& piece);
+// The exact specular's constants for one point P, the same for every piece: the unit mirror
+// direction, the lobe's half-space as a line in the disk's plane, the choice of the contour form
+// (tail when Rv is far from the whole disk, as disk_specular_exact.h decides) and the rim's cuts.
+struct DiskPieceLobe {
+  Vec3d rv;
+  double m = 0, tolerance = 0, lobe_width = 1;
+  bool misses = false;  // Rv along the disk's normal, pointing away from it: the lobe misses the plane
+  bool clips = false;   // the lobe's line nx x + ny y >= c (unit n) cuts the plane
+  double nx = 0, ny = 0, c = 0;
+  bool tail = false;
+  disk_exact_detail::RimCuts<double> cuts;
+};
 
-// The exact specular (unit intensity, ks = 1) of piece ∩ disk, same arguments as
-// disk_piece_diffuse, the disk's radius and P's normal n, mirror direction rv and shininess m: the
-// lobe's contour integral (disk_specular_exact.h) over the boundary's rim arcs and straight
-// edges, clipped to the lobe's half-space, to the relative `tolerance`. A piece inside the disk
-// takes the polygon kernels (area_specular_exact_dispatch).
-double disk_piece_specular_exact(const AreaView<double>& view, double radius, const Vec3d& n, const Vec3d& rv,
-                                 double m, double tolerance, const ClipPolygon<double>& piece);
+// `n` is P's normal, rv its mirror direction, m the shininess, `tolerance` the relative tolerance
+// of the quadrature.
+DiskPieceLobe disk_piece_lobe(const AreaView<double>& view, double radius, const Vec3d& n, const Vec3d& rv, double m,
+                              double tolerance);
+
+// Unit intensity, kd = ks = 1.
+struct DiskPieceLight {
+  double diffuse = 0;
+  double specular = 0;  // the exact specular; 0 without a lobe
+};
+
+// The diffuse and (with `lobe`) the exact specular of piece ∩ disk, from one boundary of rim arcs
+// and straight edges. `view` is the disk's view from P (the frame of disk.inscribed and
+// disk.circumscribed), `piece` a convex polygon relative to the disk's centre in the disk's plane,
+// above P's horizon; `frame` is disk_frame(view, radius, n) and `lobe` disk_piece_lobe(...), the
+// same for every piece seen from P. The specular is the lobe's contour integral
+// (disk_specular_exact.h) over the boundary clipped to the lobe's half-space; a piece inside the
+// disk takes the polygon kernels (area_specular_exact_dispatch).
+DiskPieceLight disk_piece_light(const AreaView<double>& view, const DiskFrame<double>& frame, const Vec3d& n,
+                                const DiskPieceLobe* lobe, const ClipPolygon<double>& piece);
 
 // piece ∩ polygon (both convex, relative to the light's centre, in its plane), in `out`.
 void clip_piece_to_polygon(const ClipPolygon<double>& piece, const PreparedAreaLight<double>& polygon,

@@ -1,6 +1,7 @@
 #include "shadow/shadowed_light.h"
 
 #include <cmath>
+#include <optional>
 
 #include "shadow/area_silhouette.h"
 #include "shadow/area_visibility.h"
@@ -175,18 +176,24 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   AreaPeak<double> best;
   best.angle = 4;
   if (disk) {
+    // The diffuse and the exact specular of each piece ∩ disk from one boundary.
     const DiskFrame<double> frame = disk_frame(view, disk->radius, sp.n);
-    for (std::size_t i = 0; i < pieces.size(); ++i) r.diffuse += disk_piece_diffuse(view, frame, sp.n, load(pieces, i));
+    std::optional<DiskPieceLobe> lobe;
+    if (spec.method == SpecularMethod::kExact)
+      lobe = disk_piece_lobe(view, disk->radius, sp.n, sp.rv, sp.shininess, spec.exact_tolerance);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const DiskPieceLight l = disk_piece_light(view, frame, sp.n, lobe ? &*lobe : nullptr, load(pieces, i));
+      r.diffuse += l.diffuse;
+      r.specular += l.specular;
+    }
   } else {
     for (std::size_t i = 0; i < pieces.size(); ++i) r.diffuse += area_diffuse_contour(light, view, load(pieces, i), sp.n);
   }
-  if (spec.method == SpecularMethod::kExact || spec.method == SpecularMethod::kPeak)
+  if ((spec.method == SpecularMethod::kExact && !disk) || spec.method == SpecularMethod::kPeak)
     for (std::size_t i = 0; i < lobe_pieces->size(); ++i) {
       const ClipPolygon<double>& lobe_piece = load(*lobe_pieces, i);
       if (spec.method == SpecularMethod::kExact) {
-        r.specular += disk ? disk_piece_specular_exact(view, disk->radius, sp.n, sp.rv, sp.shininess,
-                                                       spec.exact_tolerance, lobe_piece)
-                           : area_specular_exact_dispatch(lobe_piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
+        r.specular += area_specular_exact_dispatch(lobe_piece, view, sp.rv, sp.shininess, spec.exact_tolerance);
       } else {
         const AreaPeak<double> peak = area_specular_peak_direction(lobe_piece, view, sp.rv);
         if (peak.visible && peak.angle < best.angle) best = peak;

@@ -183,3 +183,37 @@ TEST_CASE("a shadowed disk's exact specular is 0 when the mirror direction point
     CHECK(shade_shadowed(overhead_disk(), sp, exact, bvh).specular == 0);
   }
 }
+
+TEST_CASE("a shadowed disk seen through a small hole is the hole's polygon light (a piece inside the disk)") {
+  // A plate at height 1.2 with a square hole whose projection from P lies inside the disk: the
+  // only visible piece is that projection, a polygon light of the disk's radiance, diffuse and
+  // exact specular (mirror direction on the hole and off it).
+  const Vec3d p{0.1, -0.1, 0};
+  const double z0 = 1.2, half = 0.05, big = 3;
+  const Vec3d middle = p + (Vec3d{0.1, 0.05, kHeight} - p) * ((z0 - p.z) / (kHeight - p.z));
+  std::vector<Tri> tris;
+  const Vec3d lo = middle - Vec3d{half, half, 0};
+  add_quad(tris, {-big, -big, z0}, {2 * big, 0, 0}, {0, lo.y + big, 0});                          // below the hole
+  add_quad(tris, {-big, lo.y + 2 * half, z0}, {2 * big, 0, 0}, {0, big - lo.y - 2 * half, 0});     // above
+  add_quad(tris, {-big, lo.y, z0}, {lo.x + big, 0, 0}, {0, 2 * half, 0});                           // left
+  add_quad(tris, {lo.x + 2 * half, lo.y, z0}, {big - lo.x - 2 * half, 0, 0}, {0, 2 * half, 0});     // right
+  const OccluderBvh bvh = make_bvh(tris);
+  std::vector<Vec3d> hole;
+  for (const Vec3d& corner : {Vec3d{-half, -half, 0}, Vec3d{-half, half, 0}, Vec3d{half, half, 0}, Vec3d{half, -half, 0}})
+    hole.push_back(p + (middle + corner - p) * ((kHeight - p.z) / (z0 - p.z)));
+  for (const Vec3d& x : hole) REQUIRE(std::hypot(x.x, x.y) < kRadius);
+  const PreparedLight<double> hole_light = prepare_light<double>(area_source(hole));
+  const ShadeOptions exact = options_with(SpecularMethod::kExact);
+  for (const Vec3d eye : {Vec3d{0.4, -0.1, 5}, Vec3d{-6, 1, 2.5}})
+    for (const double m : {0.0, 1.0, 40.5}) {
+      CAPTURE(eye);
+      CAPTURE(m);
+      const ShadingPoint<double> sp = make_shading_point(p, Vec3d{0, 0, 1}, eye, m);
+      const Response<double> want = shade(hole_light, sp, exact);
+      const Response<double> got = shade_shadowed(overhead_disk(), sp, exact, bvh);
+      MESSAGE("hole " << want.diffuse << " " << want.specular << "; shadowed " << got.diffuse << " " << got.specular);
+      REQUIRE(want.specular > 0);
+      CHECK(std::abs(got.diffuse - want.diffuse) <= 1e-12 * want.diffuse);
+      CHECK(std::abs(got.specular - want.specular) <= 4 * exact.specular.exact_tolerance * want.specular);
+    }
+}

@@ -279,8 +279,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   f.foot_u = dot(view.u, -view.D);
   f.foot_v = dot(view.v, -view.D);
   const Rect2 tight = light_rectangle(view, horizon_clipped);
-  const double grow = kSilhouetteRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light.radius});
-  f.rect = {tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
+  f.rect = silhouette_rectangle(tight, light.radius);
   f.slab = area_slab(light, view, p);
 
   const bool clustered = cluster && cluster->state != SilhouetteCluster::State::kPerVertex && cluster->box.contains(p);

@@ -33,6 +33,7 @@
 // triangle cutting, which is also the reference of the tests (tests/shadow/silhouette_test.cpp).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +46,12 @@ struct SilhouetteCluster;
 // The rectangle R is the light's bounding rectangle grown by this fraction of its size (plus a
 // floor), so that L's edges never lie on R's sides.
 inline constexpr double kSilhouetteRectangleGrowth = 0.01171875;  // 3/256
+
+// R for a light of the given radius whose (horizon-clipped) bounding rectangle is `tight`.
+inline Rect2 silhouette_rectangle(const Rect2& tight, double light_radius) {
+  const double grow = kSilhouetteRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light_radius});
+  return {tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
+}
 
 struct SilhouetteSegment {
   double u0, v0, u1, v1;  // as oriented: from (u0, v0) to (u1, v1)

@@ -14,6 +14,12 @@ constexpr std::int8_t kVariableFacing = SilhouetteCluster::kVariable;
 constexpr double kClassMargin = 1e-9;
 // The widest cluster, relative to the diagonal of the light's rectangle.
 constexpr double kWidestCluster = 1.0;
+// too_wide(): a cluster whose search reaches more than kProbedClusterLeaves leaves per vertex has
+// one vertex's search run to compare with, and is not prepared when it reached more than
+// kWideClusterLeaves times that search's leaves per vertex. Chosen on shadow_bench part 3 (the
+// refined sphere), the bowling lane, DamagedHelmet and MetalRoughSpheres (docs/shadows.md).
+constexpr double kProbedClusterLeaves = 64;
+constexpr double kWideClusterLeaves = 0.5;
 
 std::array<Vec3d, 8> corners_of(const Aabb& b) {
   std::array<Vec3d, 8> c;
@@ -64,6 +70,35 @@ std::int8_t facing_over_box(const OccluderBvh& occluders, std::uint32_t t, const
   return kVariableFacing;
 }
 
+// Whether the cluster is too wide to pay: its search reached more than kWideClusterLeaves times
+// the leaves its vertices' own searches would reach together. Preparing it (classifying every
+// triangle of those leaves over B) would then cost more than the searches it saves, and its
+// vertices search alone. This happens where B is wide
+// against the curvature of a finely tessellated surface between it and the light: the band of
+// triangles whose facing varies over B grows with B and with the number of triangles, while each
+// vertex's silhouette grows only with its square root. The search of the lit vertex nearest B's
+// centre, over the whole light's rectangle, stands for each vertex's; it is run only when the
+// cluster reached more than kProbedClusterLeaves leaves per vertex (below that, preparing costs
+// little).
+bool too_wide(const PreparedAreaLight<double>& light, const ShadingPoint<double>* points, const Vec3d& center,
+              const OccluderBvh& occluders, SilhouetteCluster& cluster) {
+  const double vertices = static_cast<double>(cluster.lit.size());
+  const double reached = static_cast<double>(cluster.leaves.size());
+  if (reached <= kProbedClusterLeaves * vertices) return false;
+  std::uint32_t nearest = cluster.lit[0];
+  for (std::uint32_t v : cluster.lit)
+    if (length_squared(points[v].p - center) < length_squared(points[nearest].p - center)) nearest = v;
+  const Vec3d& p = points[nearest].p;
+  const AreaView<double> view = make_area_view(light, p);
+  Rect2 tight;
+  for (int k = 0; k < light.count; ++k) tight.grow(dot(view.u, light.d[k]), dot(view.v, light.d[k]));
+  const AreaSlab slab = area_slab(light, view, p);
+  const HalfSpace planes[2] = {slab.beyond_light, slab.before_p};
+  occluders.silhouette_leaves(area_shadow_volume(light, view, silhouette_rectangle(tight, light.radius), p), planes, 2,
+                              p, 0, cluster.probe);
+  return reached > kWideClusterLeaves * vertices * static_cast<double>(cluster.probe.size());
+}
+
 }  // namespace
 
 void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const ShadingPoint<double>* points,
@@ -75,6 +110,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   if (occluders.brute_force()) return;
   // B: the vertices the light reaches, all on one side of it.
   Aabb box;
+  cluster.lit.clear();
   int side = 0;
   double h_min = 1e300, h_max = 0;
   for (int i = 0; i < count; ++i) {
@@ -88,6 +124,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
     if (side != 0 && s != side) return;  // both sides of a two-sided light
     side = s;
     box.grow(sp.p);
+    cluster.lit.push_back(index[i]);
     h_min = std::min(h_min, view.height);
     h_max = std::max(h_max, view.height);
   }
@@ -102,8 +139,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   // rectangle is inside the whole one, and its growth is not larger).
   Rect2 tight;
   for (int k = 0; k < light.count; ++k) tight.grow(dot(u, light.d[k]), dot(v, light.d[k]));
-  const double grow = kSilhouetteRectangleGrowth * std::max({tight.x1 - tight.x0, tight.y1 - tight.y0, 1e-3 * light.radius});
-  const Rect2 r{tight.x0 - grow, tight.x1 + grow, tight.y0 - grow, tight.y1 + grow};
+  const Rect2 r = silhouette_rectangle(tight, light.radius);
   // A cluster wider than the light sweeps a hull much larger than any of its vertices' pyramids:
   // its lists would hold far more than each vertex needs. Its vertices search alone.
   if (length(box.hi - box.lo) > kWidestCluster * std::hypot(r.x1 - r.x0, r.y1 - r.y0)) return;
@@ -143,6 +179,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   const Vec3d center = box.center();
   const double radius = 0.5 * length(box.hi - box.lo);
   occluders.silhouette_leaves(volume, inside, 2, center, radius, cluster.leaves, &cluster.held_planes);
+  if (too_wide(light, points, center, occluders, cluster)) return;  // its vertices search alone
   cluster.candidates.clear();
   std::vector<std::uint32_t>& candidates_begin = cluster.candidates_begin;
   candidates_begin.clear();

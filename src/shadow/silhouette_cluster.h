@@ -27,8 +27,9 @@
 // superset, whose extra edges and chords clip to nothing in the vertex's pyramid or weigh 0;
 // every edge is weighed by all of its triangles, not only the candidates), so the visible pieces
 // are the same: tests/shadow/silhouette_test.cpp compares clustered, per-vertex and triangle-cut answers.
-// A cluster whose box reaches the light's plane (or both sides of a two-sided light) is not
-// clustered: its vertices search alone.
+// A cluster whose box reaches the light's plane (or both sides of a two-sided light), or whose
+// search reaches far more leaves than its vertices' own searches would (too_wide in the .cpp),
+// is not clustered: its vertices search alone.
 #pragma once
 
 #include <cstdint>
@@ -55,6 +56,7 @@ struct SilhouetteCluster {
   // chord seen from some point of B, per leaf its search reached (before the leaves without items
   // are dropped from `leaves`): the i-th leaf's are [candidates_begin[i], candidates_begin[i + 1]).
   std::vector<std::uint32_t> candidates, candidates_begin;
+  std::vector<std::uint32_t> lit, probe;  // scratch: the vertices in B; one vertex's leaves (too_wide)
   std::vector<std::uint32_t> held_planes;  // scratch: per leaf of the search, the hull's planes that hold it
   // A triangle a vertex of B reads: its facing over B, and for kVariable what the vertex needs to
   // find its own (facing_from_plane): its plane, and whether it may touch the vertex or be a

@@ -379,3 +379,31 @@ TEST_CASE("clusters = one search per vertex: a closed box wider than the light's
   CHECK(a.cuts <= 1e-12);
   CHECK(a.clustered == 1);
 }
+
+TEST_CASE("clusters: one too wide for a finely tessellated sphere is not prepared, and the answers do not change") {
+  // shadow_bench part 3b's scene: a sphere of radius 0.3 between a unit square panel and a floor.
+  // From a 4 x 4 block of floor points, the band of triangles whose facing varies over the block
+  // grows with the number of triangles, a point's own silhouette only with its square root: the
+  // coarse sphere's clusters are prepared, the fine sphere's are not (their points search alone).
+  const PreparedLight<double> panel = prepare_light<double>(area_source(square_light(0.5, 2)));
+  const PreparedAreaLight<double>& polygon = std::get<PreparedAreaLight<double>>(panel.kernel);
+  std::vector<ShadingPoint<double>> points;  // 16 blocks of 4 x 4 points, one block after another
+  for (int block = 0; block < 16; ++block)
+    for (int k = 0; k < 16; ++k) {
+      const int i = 4 * (block % 4) + k % 4, j = 4 * (block / 4) + k / 4;
+      points.push_back(make_shading_point(Vec3d{-1 + (i + 0.5) / 8, -1 + (j + 0.5) / 8, 0}, Vec3d{0, 0, 1}, Vec3d{0, 0, 5}, 10.0));
+    }
+  double served[2];
+  for (int fine = 0; fine < 2; ++fine) {
+    CAPTURE(fine);
+    const OccluderBvh bvh = make_bvh(icosphere({0, 0, 1}, 0.3, fine ? 6 : 2));
+    ClusterAgreement a = compare_clusters(panel, points, bvh, SpecularMethod::kNone, fine ? 0 : 5);
+    served[fine] = a.clustered = clustered_fraction(polygon, points, bvh);
+    report(fine ? "fine sphere" : "coarse sphere", a);
+    CHECK(a.shadowed > a.cases / 4);
+    CHECK(a.diffuse <= 1e-12);
+    CHECK(a.cuts <= 1e-12);
+  }
+  CHECK(served[0] == 1);
+  CHECK(served[1] <= 0.5);
+}

@@ -73,29 +73,29 @@ std::int8_t facing_over_box(const OccluderBvh& occluders, std::uint32_t t, const
 // Whether the cluster is too wide to pay: its search reached more than kWideClusterLeaves times
 // the leaves its vertices' own searches would reach together. Preparing it (classifying every
 // triangle of those leaves over B) would then cost more than the searches it saves, and its
-// vertices search alone. This happens where B is wide
-// against the curvature of a finely tessellated surface between it and the light: the band of
-// triangles whose facing varies over B grows with B and with the number of triangles, while each
-// vertex's silhouette grows only with its square root. The search of the lit vertex nearest B's
-// centre, over the whole light's rectangle, stands for each vertex's; it is run only when the
-// cluster reached more than kProbedClusterLeaves leaves per vertex (below that, preparing costs
-// little).
+// vertices search alone. This happens where B is wide against the curvature of a finely
+// tessellated surface between it and the light: the band of triangles whose facing varies over B
+// grows with B and with the number of triangles, while each vertex's silhouette grows only with
+// its square root. The search of the lit vertex nearest B's centre, over the whole light's
+// rectangle r (its view's frame is the cluster's), stands for each vertex's; it is run only when
+// the cluster reached more than kProbedClusterLeaves leaves per vertex (below that, preparing
+// costs little).
 bool too_wide(const PreparedAreaLight<double>& light, const ShadingPoint<double>* points, const Vec3d& center,
-              const OccluderBvh& occluders, SilhouetteCluster& cluster) {
+              const Rect2& r, const OccluderBvh& occluders, SilhouetteCluster& cluster) {
   const double vertices = static_cast<double>(cluster.lit.size());
   const double reached = static_cast<double>(cluster.leaves.size());
   if (reached <= kProbedClusterLeaves * vertices) return false;
   std::uint32_t nearest = cluster.lit[0];
-  for (std::uint32_t v : cluster.lit)
-    if (length_squared(points[v].p - center) < length_squared(points[nearest].p - center)) nearest = v;
+  double nearest_distance = length_squared(points[nearest].p - center);
+  for (std::uint32_t v : cluster.lit) {
+    const double d = length_squared(points[v].p - center);
+    if (d < nearest_distance) nearest = v, nearest_distance = d;
+  }
   const Vec3d& p = points[nearest].p;
   const AreaView<double> view = make_area_view(light, p);
-  Rect2 tight;
-  for (int k = 0; k < light.count; ++k) tight.grow(dot(view.u, light.d[k]), dot(view.v, light.d[k]));
   const AreaSlab slab = area_slab(light, view, p);
   const HalfSpace planes[2] = {slab.beyond_light, slab.before_p};
-  occluders.silhouette_leaves(area_shadow_volume(light, view, silhouette_rectangle(tight, light.radius), p), planes, 2,
-                              p, 0, cluster.probe);
+  occluders.silhouette_leaves(area_shadow_volume(light, view, r, p), planes, 2, p, 0, cluster.probe);
   return reached > kWideClusterLeaves * vertices * static_cast<double>(cluster.probe.size());
 }
 
@@ -179,7 +179,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   const Vec3d center = box.center();
   const double radius = 0.5 * length(box.hi - box.lo);
   occluders.silhouette_leaves(volume, inside, 2, center, radius, cluster.leaves, &cluster.held_planes);
-  if (too_wide(light, points, center, occluders, cluster)) return;  // its vertices search alone
+  if (too_wide(light, points, center, r, occluders, cluster)) return;  // its vertices search alone
   cluster.candidates.clear();
   std::vector<std::uint32_t>& candidates_begin = cluster.candidates_begin;
   candidates_begin.clear();

@@ -95,8 +95,15 @@ BatchChoice batch_kernel_for(const PreparedLight<double>& light, const ShadeOpti
       light.kernel);
   if (c.light && options.with_specular) {
     const auto* area = std::get_if<PreparedAreaLight<double>>(&light.kernel);
+    const auto* linear = std::get_if<LinearBatchLight>(&*c.light);
     if (std::holds_alternative<PunctualBatchLight>(*c.light)) {
       c.specular_batch = true;
+    } else if (linear && options.specular.method != SpecularMethod::kExact) {
+      c.specular_reason = "no batch kernel for this specular method";
+    } else if (linear && (linear->falloff != 2 || options.specular.falloff != SpecularFalloff::kAsDiffuse)) {
+      c.specular_reason = "batch linear specular needs the inverse-square falloff";
+    } else if (linear) {
+      c.specular_batch = true;  // linear_specular_batch.h, integer m (specular_batch_covers)
     } else if (area && options.specular.method == SpecularMethod::kExact) {
       // area_specular_batch.h exists and is tested, but measured no faster than the scalar path
       // (docs/performance.md, "Batch specular"): the plan does not choose it.
@@ -137,6 +144,8 @@ bool enable_area_specular_batch(BatchChoice& choice, const PreparedLight<double>
 bool specular_batch_covers(const BatchChoice& choice, double m) {
   if (!choice.specular_batch || !choice.light) return false;
   if (choice.area_specular) return m == std::floor(m) && m >= 0 && m <= kAreaSpecularBatchMaxShininess;
+  if (std::holds_alternative<LinearBatchLight>(*choice.light))
+    return m == std::floor(m) && m >= 0 && m <= kLinearSpecularBatchMaxShininess;
   return m >= 0;
 }
 
@@ -145,6 +154,7 @@ void evaluate_specular_batch(const BatchChoice& choice, const SpecularOptions& s
                              long begin, long end, const BatchSpecularOutput& out) {
   const bool with_falloff = specular.falloff == SpecularFalloff::kAsDiffuse;
   if (choice.area_specular) area_specular_batch(*choice.area_specular, int(m), points, begin, end, out);
+  else if (const auto* l = std::get_if<LinearBatchLight>(&*choice.light)) linear_specular_batch(*l, int(m), points, begin, end, out);
   else if (const auto* p = std::get_if<PunctualBatchLight>(&*choice.light))
     punctual_specular_batch(*p, with_falloff, m, points, begin, end, out);
 }

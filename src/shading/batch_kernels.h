@@ -6,8 +6,9 @@
 // disks. Everything else (real falloff, non-convex polygons) stays on the scalar double kernels;
 // batch_kernel_for says why. With specular on, the diffuse keeps its batch kernel and the specular
 // is computed beside it (bake/batch_lighting.h): by a batch specular kernel where the model has one
-// (point, spot, directional: punctual_specular_batch.h), else by the scalar double kernel, lane
-// by lane. The exact specular of convex area polygons has a batch kernel too
+// (point, spot, directional: punctual_specular_batch.h; linear lights' exact specular with the
+// inverse-square falloff and integer m: linear_specular_batch.h), else by the scalar double
+// kernel, lane by lane. The exact specular of convex area polygons has a batch kernel too
 // (area_specular_batch.h, integer m), which the plan does not choose: measured no faster than
 // the scalar path, because the lanes its closed form refuses (11 % to 50 % on the benchmark's
 // floor) cost the scalar adaptive form either way (docs/performance.md, "Batch specular").
@@ -27,6 +28,7 @@
 #include "batch/batch_points.h"
 #include "batch/disk_diffuse_batch.h"
 #include "batch/linear_diffuse_batch.h"
+#include "batch/linear_specular_batch.h"
 #include "batch/punctual_diffuse_batch.h"
 #include "batch/punctual_specular_batch.h"
 #include "shading/prepared_light.h"
@@ -61,7 +63,8 @@ void evaluate_diffuse_batch(const BatchLight& light, const BatchPoints& points, 
 bool enable_area_specular_batch(BatchChoice& choice, const PreparedLight<double>& light);
 
 // Whether evaluate_specular_batch computes the specular of `choice`'s light for shininess m (area
-// lights: integer m in [0, kAreaSpecularBatchMaxShininess]; the others: any m).
+// lights: integer m in [0, kAreaSpecularBatchMaxShininess]; linear: integer m in
+// [0, kLinearSpecularBatchMaxShininess]; the others: any m).
 bool specular_batch_covers(const BatchChoice& choice, double m);
 
 // Specular response (unit intensity, ks = 1, range window included) of the light of `choice`

@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "core/robust_math.h"
 #include "plan/shadow_plan.h"
+#include "scene/material.h"
 
 namespace vlit {
 namespace {
@@ -254,14 +255,20 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
   }
   for (std::size_t i = 0; i < plan.lights.size(); ++i) {
     const LightSource& l = scene.lights[plan.source_of_light[i]];
-    std::size_t vertices = 0, shadowed = 0;  // the light's vertices, and those on shadowed pairs
+    const BatchChoice& batch = plan.batch_of_light[i];
+    // The light's vertices, those on shadowed pairs, and those of unshadowed pairs whose material's
+    // shininess the batch specular kernel does not cover (bake/batch_lighting.cpp).
+    std::size_t vertices = 0, shadowed = 0, specular_scalar = 0;
     for (std::size_t p = 0; p < scene.primitives.size(); ++p)
       for (std::size_t k = 0; k < plan.lights_of_primitive[p].size(); ++k)
         if (static_cast<std::size_t>(plan.lights_of_primitive[p][k]) == i) {
-          vertices += scene.primitives[p].positions.size();
-          if (plan.shadowed_of_primitive[p][k]) shadowed += scene.primitives[p].positions.size();
+          const std::size_t n = scene.primitives[p].positions.size();
+          vertices += n;
+          if (plan.shadowed_of_primitive[p][k]) shadowed += n;
+          else if (batch.specular_batch &&
+                   !specular_batch_covers(batch, phong_from_metallic_roughness(scene.material_of(scene.primitives[p])).shininess))
+            specular_scalar += n;
         }
-    const BatchChoice& batch = plan.batch_of_light[i];
     s << "plan: light " << l.name << ": " << diffuse_kernel(l, plan.shade) << ", " << vertices << " vertices, ";
     // Shadowed pairs run the scalar shadowed path for diffuse and specular (bake/light_vertices.cpp).
     if (vertices > 0 && shadowed == vertices) {
@@ -273,7 +280,12 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     // The specular's path, beside the diffuse's (bake/batch_lighting.h).
     if (plan.shade.with_specular) {
       s << "; specular " << specular_kernel(plan.shade) << ": ";
-      if (batch.specular_batch) s << "double SIMD batch (" << batch_instruction_set() << ")";
+      if (batch.specular_batch && specular_scalar == 0) s << "double SIMD batch (" << batch_instruction_set() << ")";
+      else if (batch.specular_batch && specular_scalar == vertices - shadowed)
+        s << "scalar double (no batch kernel for the materials' shininess)";
+      else if (batch.specular_batch)
+        s << "double SIMD batch (" << batch_instruction_set() << "), scalar double for " << specular_scalar
+          << " vertices (no batch kernel for their materials' shininess)";
       else if (batch.light) s << "scalar double (" << batch.specular_reason << ")";
       else s << "scalar double";
     }

@@ -121,6 +121,36 @@ TEST_CASE("batch bake: the plan names the float batch kernels and why the others
   CHECK(describe(plan_lighting(scene, scalar), scene).find("scalar double (double precision requested)") != std::string::npos);
 }
 
+TEST_CASE("batch bake: the plan says where the linear batch specular does not cover the materials' shininess") {
+  // Roughness 0.6 maps to the real exponent m = 2 / 0.6^4 - 2 = 13.43 (scene/material.h), which
+  // the linear kernel (integer m) does not take; the default material (m = 1) it does.
+  Scene scene = test_scene();
+  Material rough;
+  rough.roughness = 0.6;
+  scene.materials.push_back(rough);
+  scene.primitives[0].material = 0;
+  LightingRequest with_eye;
+  with_eye.eye = Vec3d{0, 0, 5};
+  const std::string all_real = describe(plan_lighting(scene, with_eye), scene);
+  std::size_t line = all_real.find("light tube2: ");
+  CHECK(all_real.find("; specular exact: scalar double (no batch kernel for the materials' shininess)\n", line) <
+        all_real.find('\n', line));
+  // A tile above the tubes facing down, with the default material: part of the light's vertices
+  // are covered.
+  ScenePrimitive tile;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      tile.positions.push_back({-1.0 + 2 * i, -1.0 + 2 * j, 10});
+      tile.normals.push_back({0, 0, -1});
+    }
+  tile.triangles = {0, 1, 3, 0, 3, 2};
+  scene.primitives.push_back(tile);
+  const std::string mixed = describe(plan_lighting(scene, with_eye), scene);
+  line = mixed.find("light tube2: ");
+  CHECK(mixed.find(", scalar double for 17161 vertices (no batch kernel for their materials' shininess)\n", line) <
+        mixed.find('\n', line));
+}
+
 TEST_CASE("batch bake: the plan says which lights' pairs run the shadowed scalar path") {
   Scene scene = test_scene();
   scene.primitives[0].triangles = {0, 1, 131};  // the wavy sheet may shadow itself: every pair shadowed

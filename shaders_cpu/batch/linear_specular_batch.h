@@ -298,24 +298,16 @@ template <bool kOdd>
 inline void linear_specular_blocks(const LinearBatchLight& light, int m, const BatchPoints& pts, long begin, long end,
                                    const BatchSpecularOutput& out) {
   const LinearBatchLight L = light;  // a local copy: provably not aliased by the output arrays
-  LinearSpecularBlock blk;
-  const double* __restrict px = pts.px;
-  const double* __restrict py = pts.py;
-  const double* __restrict pz = pts.pz;
-  const float* __restrict nx = pts.nx;
-  const float* __restrict ny = pts.ny;
-  const float* __restrict nz = pts.nz;
-  const double* __restrict rx = pts.rx;
-  const double* __restrict ry = pts.ry;
-  const double* __restrict rz = pts.rz;
-  double* __restrict specular = out.specular;
-  std::uint8_t* __restrict stiff = out.stiff;
+  LinearSpecularBlock blk;  // local: the stages' loops see no aliasing with the points or outputs
+  double* const specular = out.specular;
+  std::uint8_t* const stiff = out.stiff;
   for (long start = begin; start < end; start += kLinearSpecularBlock) {
     const int lanes = int(end - start < kLinearSpecularBlock ? end - start : kLinearSpecularBlock);
 #pragma omp simd
     for (int l = 0; l < lanes; ++l) {
       const long v = start + l;
-      linear_specular_setup<kOdd>(L, m, px[v], py[v], pz[v], nx[v], ny[v], nz[v], rx[v], ry[v], rz[v], l, blk);
+      linear_specular_setup<kOdd>(L, m, pts.px[v], pts.py[v], pts.pz[v], pts.nx[v], pts.ny[v], pts.nz[v], pts.rx[v], pts.ry[v],
+                                  pts.rz[v], l, blk);
     }
     linear_specular_forward(kOdd ? 3 : 2, m, lanes, blk);
     linear_specular_backward(m, lanes, blk);

@@ -82,6 +82,18 @@ Scene test_scene() {
   return scene;
 }
 
+// A flat tile of 4 vertices at z = 10 facing down, above the tubes, with the default material.
+ScenePrimitive tile_above_tubes() {
+  ScenePrimitive tile;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      tile.positions.push_back({-1.0 + 2 * i, -1.0 + 2 * j, 10});
+      tile.normals.push_back({0, 0, -1});
+    }
+  tile.triangles = {0, 1, 3, 0, 3, 2};
+  return tile;
+}
+
 std::vector<VertexLight> light_with_threads(const Scene& scene, int threads, bool float_batch,
                                            std::optional<Vec3d> eye = std::nullopt) {
   const int saved = omp_get_max_threads();
@@ -137,14 +149,7 @@ TEST_CASE("batch bake: the plan says where the linear batch specular does not co
         all_real.find('\n', line));
   // A tile above the tubes facing down, with the default material: part of the light's vertices
   // are covered.
-  ScenePrimitive tile;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      tile.positions.push_back({-1.0 + 2 * i, -1.0 + 2 * j, 10});
-      tile.normals.push_back({0, 0, -1});
-    }
-  tile.triangles = {0, 1, 3, 0, 3, 2};
-  scene.primitives.push_back(tile);
+  scene.primitives.push_back(tile_above_tubes());
   const std::string mixed = describe(plan_lighting(scene, with_eye), scene);
   line = mixed.find("light tube2: ");
   CHECK(mixed.find(", scalar double for 17161 vertices (no batch kernel for their materials' shininess)\n", line) <
@@ -161,14 +166,7 @@ TEST_CASE("batch bake: the plan says which lights' pairs run the shadowed scalar
                  "part of the light, eq. 10)\n") != std::string::npos);
   CHECK(all.find("float SIMD batch") == std::string::npos);
   // A flat tile facing down above the tubes, with nothing between them: its pairs stay unshadowed.
-  ScenePrimitive tile;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      tile.positions.push_back({-1.0 + 2 * i, -1.0 + 2 * j, 10});
-      tile.normals.push_back({0, 0, -1});
-    }
-  tile.triangles = {0, 1, 3, 0, 3, 2};
-  scene.primitives.push_back(tile);
+  scene.primitives.push_back(tile_above_tubes());
   const std::string some = describe(plan_lighting(scene, shadows), scene);
   const std::size_t line = some.find("light tube2: ");
   CHECK(some.find("light tube2: linear closed form (eq. 4), 17165 vertices, float SIMD batch") != std::string::npos);

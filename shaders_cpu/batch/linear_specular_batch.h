@@ -44,8 +44,8 @@
 // (SpecularOptions::exact_tolerance, which the scalar adaptive form meets); looser than the scalar
 // closed form's 5e-12, so the batch computes most tails the scalar closed form refuses (and
 // integrates adaptively). A lane neither chain vouches for is flagged (BatchSpecularOutput::stiff)
-// and recomputed by the caller with the scalar exact kernel: far and tiny lights (short intervals
-// cancel in both), P within ~1e-6 of the line. Also flagged: a light shorter than eps of its
+// and recomputed by the caller with the scalar exact kernel: in the tests, far and tiny lights at
+// m >= 40 (short intervals cancel in both), P within 1e-6 of the line. Also flagged: a light shorter than eps of its
 // distance (the point-light limit), P at both endpoints or on the line (h = 0), an end within 2e-7
 // of P's tangent plane, and a lane whose horizon cut hangs on the float normal: the lanes' normals
 // are float (batch_points.h) while the bake's scalar kernel sees the double normal, and unlike the
@@ -56,8 +56,9 @@
 // scalar exact kernel at tolerance 2e-12, same float normal; the random set: 12 tubes of length
 // 1e-2 to 1e1, 700 points each, m = 0, 1, 2, 3, 40, 41, 100, 200): every accepted lane within 2e-9
 // (the test's bar), 430 of 67200 lanes flagged. The forward estimate alone is not a bound in deep
-// tails: on the test's "deep tails" lanes (m = 2) the forward chain passes its test with errors of
-// 4.8e-9 and 3.1e-9, and the backward chains, whose estimate is smaller, are taken. Speed and the
+// tails: on the test's "deep tails" lanes (m = 2) the forward chain passes its test with errors
+// above the test's bar (the case fails when the forward chain is taken there), and the backward
+// chains, whose estimate is smaller, are taken. Speed and the
 // benchmark's errors: docs/performance.md ("Batch specular").
 #pragma once
 
@@ -99,13 +100,16 @@ inline double atan_nonnegative(double t) {
 // chains' loops would keep its branches.
 struct LinearSpecularBlock {
   static constexpr int B = kLinearSpecularBlock;
-  // Forward chain: W, its magnitude, c^(k-1) at both ends and the per-step constants.
-  double w[B], w_mag[B], qa[B], qb[B], ca2[B], cb2[B], spa[B], spb[B], spa_mag[B], spb_mag[B];
-  // Backward chains (tails): U at the near and far ends, their start errors, c^2 and sφ there.
-  double un[B], uf[B], en[B], ef[B], cn2[B], cf2[B], sn[B], sf[B];
-  // Finishing: C, c at both ends, h |Ld|, scale^-2, the frame's rounding factor, the ends' input
-  // rounding terms, the horizon cut's sensitivity; flags as 0 or 1.
-  double big_c[B], ca[B], cb[B], cn[B], cf[B], h_ell[B], scale2[B], frame[B], dpa[B], dpb[B], dcn[B], dcf[B], cut[B];
+  // c at the clipped interval's ends a, b (forward chain, finish) and at the tails' near and far
+  // ends n, f (backward chains, finish).
+  double ca[B], cb[B], cn[B], cf[B];
+  // Forward chain: W, its magnitude, c^(k-1) at both ends, sφ and its magnitude there.
+  double w[B], w_mag[B], qa[B], qb[B], spa[B], spb[B], spa_mag[B], spb_mag[B];
+  // Backward chains (tails): U at the near and far ends, their start errors, sφ there.
+  double un[B], uf[B], en[B], ef[B], sn[B], sf[B];
+  // Finishing: C, h |Ld|, scale^-2, the frame's rounding factor, the ends' input rounding terms,
+  // the horizon cut's sensitivity; flags as 0 or 1.
+  double big_c[B], h_ell[B], scale2[B], frame[B], dpa[B], dpb[B], dcn[B], dcf[B], cut[B];
   double tail[B], empty[B], stiff[B];
 };
 
@@ -181,8 +185,6 @@ inline void linear_specular_setup(const LinearBatchLight& L, int m, double px, d
     k_.qa[l] = ca;
     k_.qb[l] = cb;
   }
-  k_.ca2[l] = ca * ca;
-  k_.cb2[l] = cb * cb;
   k_.spa[l] = spa;
   k_.spb[l] = spb;
   k_.spa_mag[l] = (aa * std::fabs(xa) + ab) / ra;
@@ -201,8 +203,6 @@ inline void linear_specular_setup(const LinearBatchLight& L, int m, double px, d
   k_.uf[l] = uf;
   k_.en[l] = un * cn_t * cn_t / (top1 * sn_t * sn_t);
   k_.ef[l] = uf * cf_t * cf_t / (top1 * sf_t * sf_t);
-  k_.cn2[l] = cn_t * cn_t;
-  k_.cf2[l] = cf_t * cf_t;
   k_.sn[l] = sn_t;
   k_.sf[l] = sf_t;
   // Finishing values.
@@ -246,8 +246,8 @@ inline void linear_specular_forward(int k0, int m, int lanes, LinearSpecularBloc
     for (int l = 0; l < lanes; ++l) {
       b.w[l] = (b.qb[l] * b.spb[l] - b.qa[l] * b.spa[l] + km1 * b.w[l]) * inv_k;
       b.w_mag[l] = (b.qb[l] * b.spb_mag[l] + b.qa[l] * b.spa_mag[l] + km1 * b.w_mag[l]) * inv_k;
-      b.qa[l] *= b.ca2[l];
-      b.qb[l] *= b.cb2[l];
+      b.qa[l] *= b.ca[l] * b.ca[l];
+      b.qb[l] *= b.cb[l] * b.cb[l];
     }
   }
 }
@@ -259,7 +259,7 @@ inline void linear_specular_backward(int m, int lanes, LinearSpecularBlock& b) {
     const double jj = double(j), inv_j = 1. / (jj - 1.);
 #pragma omp simd
     for (int l = 0; l < lanes; ++l) {
-      const double grow_n = jj * b.cn2[l] * inv_j, grow_f = jj * b.cf2[l] * inv_j;
+      const double grow_n = jj * (b.cn[l] * b.cn[l]) * inv_j, grow_f = jj * (b.cf[l] * b.cf[l]) * inv_j;
       b.un[l] = grow_n * b.un[l] + b.sn[l] * inv_j;
       b.uf[l] = grow_f * b.uf[l] + b.sf[l] * inv_j;
       b.en[l] *= grow_n;

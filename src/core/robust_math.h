@@ -29,17 +29,22 @@ inline double orient2(double ax, double ay, double bx, double by, double cx, dou
   return difference_of_products(bx - ax, cy - ay, by - ay, cx - ax);
 }
 
-// The sign of orient2 (-1, 0, +1), from plain products where their rounding cannot change it
-// (the determinant farther from 0 than 3 eps times the products' sum, a bound of that rounding
-// that also holds when the compiler fuses a product into the subtraction, plus a floor for
-// underflow), otherwise from orient2 itself. Always orient2's sign; cheaper when the determinant
-// is not close to 0.
-inline int orient2_sign(double ax, double ay, double bx, double by, double cx, double cy) {
+// The sign of orient2 where plain products decide it (the determinant farther from 0 than 3 eps
+// times the products' sum, a bound of their rounding that also holds when the compiler fuses a
+// product into the subtraction, plus a floor for underflow), 0 where they do not: then
+// orient2_sign decides, and its sign may be 0 or not. No branch: callers that test many pairs
+// combine several of these before they branch.
+inline int fast_orient2_sign(double ax, double ay, double bx, double by, double cx, double cy) {
   const double p = (bx - ax) * (cy - ay), q = (by - ay) * (cx - ax);
   const double det = p - q;
   const double bound = 3.4e-16 * (std::abs(p) + std::abs(q)) + 1e-300;
-  if (det > bound) return 1;
-  if (det < -bound) return -1;
+  return (det > bound) - (det < -bound);
+}
+
+// The sign of orient2 (-1, 0, +1): fast_orient2_sign's where it decides, otherwise orient2's.
+// Always orient2's sign; cheaper when the determinant is not close to 0.
+inline int orient2_sign(double ax, double ay, double bx, double by, double cx, double cy) {
+  if (const int fast = fast_orient2_sign(ax, ay, bx, by, cx, cy)) return fast;
   const double o = orient2(ax, ay, bx, by, cx, cy);
   return (o > 0) - (o < 0);
 }

@@ -421,32 +421,46 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   }
   for (const auto& [v, w] : s.left_steps) add_event(v);
   {
-    // The segments whose v-range is still open, with what the cheap tests read.
+    // The segments whose v-range is still open, with what the first test reads, in arrays: the
+    // test (still open, and the u-ranges overlap) runs without branches over all of them and
+    // lists the ones that pass, which alone are tested for a crossing.
     // Segments that ended stay in the list (skipped) until they are a quarter of it: dropping
     // them at every insertion rewrote the whole list each time. (The segments come in order of
     // v0, so one that ended before this one's start has ended for every later one.)
-    std::vector<AreaSilhouetteScratch::Active>& active = s.active;
+    AreaSilhouetteScratch::ActiveSegments& active = s.active;
     active.clear();
     for (int i : order) {
       const SilhouetteSegment& a = seg[i];
       const double a_lo = std::min(a.u0, a.u1), a_hi = std::max(a.u0, a.u1);
-      std::size_t ended = 0;
-      for (const AreaSilhouetteScratch::Active& entry : active) {
-        if (entry.v1 <= a.v0) {
-          ++ended;
+      const std::size_t held = active.index.size();
+      s.meets.resize(held);
+      std::size_t ended = 0, meets = 0;
+      for (std::size_t j = 0; j < held; ++j) {
+        const bool open = active.v1[j] > a.v0;
+        ended += !open;
+        s.meets[meets] = static_cast<int>(j);
+        meets += open & (active.u_lo[j] <= a_hi) & (a_lo <= active.u_hi[j]);
+      }
+      for (std::size_t k = 0; k < meets; ++k) {
+        const SilhouetteSegment& b = seg[active.index[s.meets[k]]];
+        // A proper crossing: b's ends strictly on both sides of a, and a's of b. The four signs
+        // from plain products first, all of them (a branch per sign is mispredicted half the
+        // time); orient2_sign where one of them is too close to 0 for its products to decide.
+        const int fast[4] = {fast_orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0),
+                             fast_orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1),
+                             fast_orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u0, a.v0),
+                             fast_orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u1, a.v1)};
+        if ((fast[0] == 0) | (fast[1] == 0) | (fast[2] == 0) | (fast[3] == 0)) {
+          if (orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0) * orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1) >= 0) continue;
+          if (orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u0, a.v0) * orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u1, a.v1) >= 0) continue;
+        } else if ((fast[0] == fast[1]) | (fast[2] == fast[3])) {
           continue;
         }
-        if (a_hi < entry.u_lo || entry.u_hi < a_lo) continue;
-        const SilhouetteSegment& b = seg[entry.index];
-        // A proper crossing: b's ends strictly on both sides of a, and a's of b.
-        if (orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0) * orient2_sign(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1) >= 0) continue;
-        if (orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u0, a.v0) * orient2_sign(b.u0, b.v0, b.u1, b.v1, a.u1, a.v1) >= 0) continue;
         const double o1 = orient2(a.u0, a.v0, a.u1, a.v1, b.u0, b.v0), o2 = orient2(a.u0, a.v0, a.u1, a.v1, b.u1, b.v1);
         add_event(b.v0 + (b.v1 - b.v0) * (o1 / (o1 - o2)));
       }
-      if (4 * ended > active.size())
-        std::erase_if(active, [&](const AreaSilhouetteScratch::Active& entry) { return entry.v1 <= a.v0; });
-      active.push_back({a.v1, a_lo, a_hi, i});
+      if (4 * ended > held) active.keep_open_after(a.v0);
+      active.push(a.v1, a_lo, a_hi, i);
     }
   }
   std::sort(other_events.begin(), other_events.end());

@@ -74,8 +74,20 @@ struct AreaSilhouetteScratch {
   std::vector<SilhouetteSegment> segments;
   std::vector<double> events, starts, other_events;
   std::vector<std::pair<double, int>> left_steps;
-  struct Active { double v1, u_lo, u_hi; int index; };  // a segment the sweep's crossing search holds
-  std::vector<Active> active;
+  // The segments the sweep's crossing search holds: upper v, u-range, index.
+  struct ActiveSegments {
+    std::vector<double> v1, u_lo, u_hi;
+    std::vector<int> index;
+    void clear() { v1.clear(), u_lo.clear(), u_hi.clear(), index.clear(); }
+    void push(double top, double lo, double hi, int i) { v1.push_back(top), u_lo.push_back(lo), u_hi.push_back(hi), index.push_back(i); }
+    void keep_open_after(double v) {  // drops the segments with v1 <= v, keeping the others' order
+      std::size_t kept = 0;
+      for (std::size_t j = 0; j < index.size(); ++j)
+        if (v1[j] > v) v1[kept] = v1[j], u_lo[kept] = u_lo[j], u_hi[kept] = u_hi[j], index[kept++] = index[j];
+      v1.resize(kept), u_lo.resize(kept), u_hi.resize(kept), index.resize(kept);
+    }
+  } active;
+  std::vector<int> meets;  // the crossing search's list of held segments that pass its first test
   std::vector<int> order, slab_first, slab_segments, step, prefix, by_height;
   std::vector<std::pair<double, int>> by_start;  // (v0, segment), for the events and the crossing search
   std::vector<std::pair<double, int>> sorted;    // a slab's (u, segment); then the reference ray's gaps

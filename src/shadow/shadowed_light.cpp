@@ -12,6 +12,12 @@
 namespace vlit {
 namespace {
 
+// The silhouette method's per-thread tables (per triangle and edge of the scene: one per thread).
+AreaSilhouetteScratch& silhouette_scratch() {
+  thread_local AreaSilhouetteScratch scratch;
+  return scratch;
+}
+
 SpecularOptions effective_specular(const ShadeOptions& options) {
   SpecularOptions s = options.specular;
   if (!options.with_specular) s.method = SpecularMethod::kNone;
@@ -105,7 +111,8 @@ template <class Unoccluded>
 Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, const ShadingPoint<double>& sp,
                                      const ShadeOptions& options, const OccluderBvh& occluders,
                                      const SilhouetteCluster* cluster, std::span<const WedgeCone> wedges,
-                                     const Unoccluded& unoccluded, const PreparedDiskLight<double>* disk = nullptr) {
+                                     const SharedVisibility* seen, const Unoccluded& unoccluded,
+                                     const PreparedDiskLight<double>* disk = nullptr) {
   const SpecularOptions spec = effective_specular(options);
   const AreaView<double> view = make_area_view(light, sp.p);
   if (!view.lit) return {};
@@ -113,10 +120,14 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
   clip_to_horizon(light, view, sp.n, horizon);
   if (horizon.count < 3) return {};
   thread_local AreaShadowScratch scratch;
-  thread_local AreaSilhouetteScratch silhouette;
+  AreaSilhouetteScratch& silhouette = silhouette_scratch();
   const LightPieces* visible = nullptr;
   bool nothing_reaches = false;  // no occluder reaches between P and the light
-  if (options.area_shadows == AreaShadowMethod::kSilhouette) {
+  using Shared = SharedVisibility::State;
+  if (options.area_shadows == AreaShadowMethod::kSilhouette && seen && seen->state != Shared::kUndecided) {
+    if (seen->state == Shared::kUnoccluded) nothing_reaches = true;
+    else visible = &seen->pieces;
+  } else if (options.area_shadows == AreaShadowMethod::kSilhouette) {
     switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette, cluster)) {
       case SilhouetteVisibility::kUnoccluded: nothing_reaches = true; break;
       case SilhouetteVisibility::kPieces: visible = &silhouette.pieces; break;
@@ -226,17 +237,38 @@ double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
 
 }  // namespace
 
+void see_light_above_horizon(const PreparedAreaLight<double>& polygon, const ShadingPoint<double>& sp,
+                             const OccluderBvh& occluders, const SilhouetteCluster* cluster, SharedVisibility& out) {
+  using State = SharedVisibility::State;
+  out.state = State::kUnlit;
+  out.pieces.clear();
+  const AreaView<double> view = make_area_view(polygon, sp.p);
+  if (!view.lit) return;
+  ClipPolygon<double> horizon;
+  clip_to_horizon(polygon, view, sp.n, horizon);
+  if (horizon.count < 3) return;
+  AreaSilhouetteScratch& silhouette = silhouette_scratch();
+  switch (visible_area_by_silhouettes(polygon, view, horizon, sp.p, occluders, silhouette, cluster)) {
+    case SilhouetteVisibility::kUnoccluded: out.state = State::kUnoccluded; break;
+    case SilhouetteVisibility::kPieces:
+      out.state = State::kPieces;
+      out.pieces = silhouette.pieces;
+      break;
+    case SilhouetteVisibility::kUndecided: out.state = State::kUndecided; break;
+  }
+}
+
 template <class K>
 Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& sp, const ShadeOptions& options,
                                        const OccluderBvh& occluders, const SilhouetteCluster* cluster,
-                                       std::span<const WedgeCone> wedges) {
+                                       std::span<const WedgeCone> wedges, const SharedVisibility* seen) {
   if constexpr (std::is_same_v<K, LinearLight<double>>) {
     return shade_linear_shadowed(k, sp, options, occluders, wedges);
   } else if constexpr (std::is_same_v<K, PreparedAreaLight<double>>) {
-    return shade_area_shadowed(k, sp, options, occluders, cluster, wedges,
+    return shade_area_shadowed(k, sp, options, occluders, cluster, wedges, seen,
                                [&] { return shade_area(k, sp, effective_specular(options)); });
   } else if constexpr (std::is_same_v<K, PreparedDiskLight<double>>) {
-    return shade_area_shadowed(shadowed_polygon(k), sp, options, occluders, cluster, wedges,
+    return shade_area_shadowed(shadowed_polygon(k), sp, options, occluders, cluster, wedges, seen,
                                [&] { return shade_kernel<double>(k, sp, options); }, &k);
   } else {
     const Response<double> r = shade_kernel<double>(k, sp, options);
@@ -255,22 +287,28 @@ Response<double> shade_kernel_shadowed(const K& k, const ShadingPoint<double>& s
 
 template Response<double> shade_kernel_shadowed(const PointLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*, std::span<const WedgeCone>);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>,
+                                                const SharedVisibility*);
 template Response<double> shade_kernel_shadowed(const DirectionalLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*, std::span<const WedgeCone>);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>,
+                                                const SharedVisibility*);
 template Response<double> shade_kernel_shadowed(const SpotLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*, std::span<const WedgeCone>);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>,
+                                                const SharedVisibility*);
 template Response<double> shade_kernel_shadowed(const LinearLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*, std::span<const WedgeCone>);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>,
+                                                const SharedVisibility*);
 template Response<double> shade_kernel_shadowed(const PreparedAreaLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*, std::span<const WedgeCone>);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>,
+                                                const SharedVisibility*);
 template Response<double> shade_kernel_shadowed(const PreparedDiskLight<double>&, const ShadingPoint<double>&,
                                                 const ShadeOptions&, const OccluderBvh&,
-                                                const SilhouetteCluster*, std::span<const WedgeCone>);
+                                                const SilhouetteCluster*, std::span<const WedgeCone>,
+                                                const SharedVisibility*);
 
 Response<double> shade_shadowed(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
                                 const ShadeOptions& options, const OccluderBvh& occluders,

@@ -28,6 +28,7 @@
 #include <span>
 
 #include "shading/prepared_light.h"
+#include "shadow/area_visibility.h"
 #include "shadow/crease_wedges.h"
 #include "shadow/occluder_bvh.h"
 
@@ -35,15 +36,40 @@ namespace vlit {
 
 struct SilhouetteCluster;
 
+// What an area or disk light's polygon (shadowed_polygon) shows above one horizon from one
+// position, found once for the vertices there whose horizon clips the polygon alike: a mesh
+// splits a vertex wherever its normals or texture coordinates are discontinuous (a seam, a hard
+// edge), and copies whose horizons leave the polygon whole, or that have the same normal, ask
+// the same question. Their answers are the same bits as their own searches'.
+struct SharedVisibility {
+  enum class State {
+    kUnlit,       // the position is behind the light (or in its plane), or the light below the horizon
+    kUnoccluded,  // nothing reaches between the position and the light
+    kPieces,      // `pieces` is the visible part (possibly empty)
+    kUndecided,   // the silhouette method's checks failed: each vertex finds its own part
+  };
+  State state = State::kUnlit;
+  LightPieces pieces;
+};
+
+// Fills `out` for sp (its position and horizon) by silhouettes (area_silhouette.h), with the
+// cluster's lists when the cluster holds sp (as shade_kernel_shadowed).
+void see_light_above_horizon(const PreparedAreaLight<double>& polygon, const ShadingPoint<double>& sp,
+                             const OccluderBvh& occluders, const SilhouetteCluster* cluster, SharedVisibility& out);
+
 // cluster: for area and disk lights by silhouettes, a cluster holding sp (silhouette_cluster.h,
 // prepared for shadowed_polygon(kernel)) whose lists replace the per-vertex search; ignored
 // otherwise.
 // wedges: the cones that triangles across a crease hide from sp when it is a mesh vertex
 // (crease_wedges.h); empty for other points.
+// seen: for area and disk lights by silhouettes, see_light_above_horizon's answer for a point at
+// sp.p whose horizon clips the polygon as sp's does (then no search is made unless it is
+// undecided); ignored otherwise.
 template <class K>
 Response<double> shade_kernel_shadowed(const K& kernel, const ShadingPoint<double>& sp, const ShadeOptions& options,
                                        const OccluderBvh& occluders, const SilhouetteCluster* cluster = nullptr,
-                                       std::span<const WedgeCone> wedges = {});
+                                       std::span<const WedgeCone> wedges = {},
+                                       const SharedVisibility* seen = nullptr);
 
 // The polygon whose visible part is computed: the light itself, or the regular 64-gon
 // circumscribed about a disk (its visible pieces are then intersected with the disk:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <numeric>
 #include <vector>
 
@@ -48,10 +49,11 @@ std::vector<std::uint32_t> morton_order(const ShadingPoint<double>* points, long
 template <class K>
 void shade_vertex(const PreparedLight<double>& light, const K& kernel, const ShadeOptions& options,
                   const ShadingPoint<double>& sp, Vec3d& diffuse, Vec3d* specular, const OccluderBvh& occluders,
-                  const SilhouetteCluster* cluster, std::span<const WedgeCone> wedges) {
+                  const SilhouetteCluster* cluster, std::span<const WedgeCone> wedges,
+                  const SharedVisibility* seen = nullptr) {
   const double window = range_window(light, sp.p);
   if (window <= 0) return;
-  const Response<double> r = shade_kernel_shadowed(kernel, sp, options, occluders, cluster, wedges);
+  const Response<double> r = shade_kernel_shadowed(kernel, sp, options, occluders, cluster, wedges, seen);
   diffuse += light.radiance * (r.diffuse * window);
   if (specular) *specular += light.radiance * (r.specular * window);
 }
@@ -80,11 +82,63 @@ void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOp
             const long begin = c * cluster_size;
             const int n = static_cast<int>(std::min<long>(cluster_size, count - begin));
             thread_local SilhouetteCluster cluster;
+            thread_local SharedVisibility seen;
+            thread_local std::vector<int> keeps, asks;  // per vertex of a position: horizon_keeps; its class, or -1
             prepare_silhouette_cluster(polygon, points, order.data() + begin, n, occluders, cluster);
-            for (int i = 0; i < n; ++i) {
+            // Vertices at one position (split at a seam of normals or texture coordinates;
+            // adjacent in Morton order) whose horizons clip the polygon alike ask the BVH once
+            // (see_light_above_horizon): those whose horizon leaves the whole polygon, and those
+            // with the same normal. Within the cluster only, so that a vertex's answer never
+            // depends on which thread took the cluster.
+            auto sp_at = [&](int i) -> const ShadingPoint<double>& { return points[order[begin + i]]; };
+            auto horizon_keeps = [&](int i) {  // 0: no corner of the polygon, 1: some, 2: all (as clip_to_horizon)
+              const ShadingPoint<double>& sp = sp_at(i);
+              const double offset = dot(sp.n, polygon.center - sp.p);
+              int kept = 0;
+              for (int k = 0; k < polygon.count; ++k) kept += dot(sp.n, polygon.d[k]) + offset >= 0;
+              return kept == 0 ? 0 : kept == polygon.count ? 2 : 1;
+            };
+            auto same_normal = [&](int i, int j) { return std::memcmp(&sp_at(i).n, &sp_at(j).n, sizeof(Vec3d)) == 0; };
+            auto shade_at = [&](int i, const SharedVisibility* shared) {
               const std::uint32_t v = order[begin + i];
               shade_vertex(light, kernel, options, points[v], diffuse[v], specular ? specular + v : nullptr, occluders,
-                           &cluster, wedges_of(v));
+                           &cluster, wedges_of(v), shared);
+            };
+            for (int g0 = 0, g1 = 0; g0 < n; g0 = g1) {
+              for (g1 = g0 + 1; g1 < n && sp_at(g1).p == sp_at(g0).p; ++g1) {}
+              if (g1 - g0 == 1) {
+                shade_at(g0, nullptr);
+                continue;
+              }
+              // The classes: a vertex with the whole polygon above its horizon joins the first
+              // such one, one with a cut polygon the first with its normal.
+              asks.assign(g1 - g0, -1);
+              keeps.resize(g1 - g0);
+              for (int i = g0; i < g1; ++i) {
+                keeps[i - g0] = horizon_keeps(i);
+                if (keeps[i - g0] == 0) continue;
+                asks[i - g0] = i - g0;
+                for (int j = g0; j < i; ++j)
+                  if (keeps[j - g0] == keeps[i - g0] && (keeps[i - g0] == 2 || same_normal(i, j))) {
+                    asks[i - g0] = asks[j - g0];
+                    break;
+                  }
+              }
+              for (int i = g0; i < g1; ++i) {
+                const int a = asks[i - g0];
+                if (a != i - g0) continue;  // below the horizon, or shaded with its class
+                int members = 0;
+                for (int j = i; j < g1; ++j) members += asks[j - g0] == a;
+                if (members == 1) {
+                  shade_at(i, nullptr);
+                  continue;
+                }
+                see_light_above_horizon(polygon, sp_at(i), occluders, &cluster, seen);
+                for (int j = i; j < g1; ++j)
+                  if (asks[j - g0] == a) shade_at(j, &seen);
+              }
+              for (int i = g0; i < g1; ++i)
+                if (asks[i - g0] < 0) shade_at(i, nullptr);
             }
           }
           return;

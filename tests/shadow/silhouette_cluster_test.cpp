@@ -407,3 +407,56 @@ TEST_CASE("clusters: one too wide for a finely tessellated sphere is not prepare
   CHECK(served[0] == 1);
   CHECK(served[1] <= 0.5);
 }
+
+TEST_CASE("clusters: vertices at one position whose horizons clip the light alike share one search") {
+  // Every vertex of a surface shadowing itself, split into 4 vertices at its position (as at a
+  // seam): its normal twice, and tilted by 0.2 and -0.6 rad about y. Under the steep panel beside
+  // the surface and the disk above it, some copies keep the whole light above their horizon
+  // (they share one search), the two with the same normal share one whatever their horizon
+  // keeps, and the tilted ones that cut the light differently search alone. The vertex loop must
+  // give each vertex what its own search gives.
+  const BumpySurface surface = bumpy_surface(24, 0.35);
+  const OccluderBvh bvh = make_bvh(surface.tris);
+  const PreparedLight<double> lights[2] = {
+      prepare_light<double>(area_source({{2.4, -0.6, 0.3}, {2.4, 0.6, 0.3}, {2.7, 0.6, 1.2}, {2.7, -0.6, 1.2}}, true)),
+      prepare_light<double>(disk_source({0.9, 0.2, 1.4}, normalize(Vec3d{-0.5, 0, -1}), 0.5))};
+  constexpr int kCopies = 4;
+  std::vector<ShadingPoint<double>> points;
+  for (const ShadingPoint<double>& sp : surface.points)
+    for (const double tilt : {0.0, 0.0, 0.2, -0.6}) {
+      const Vec3d n{sp.n.x * std::cos(tilt) + sp.n.z * std::sin(tilt), sp.n.y, -sp.n.x * std::sin(tilt) + sp.n.z * std::cos(tilt)};
+      points.push_back(make_shading_point(sp.p, n, Vec3d{0, 0, 5}, 10.0));
+    }
+  for (int l = 0; l < 2; ++l) {
+    const PreparedAreaLight<double>& polygon =
+        l == 0 ? std::get<PreparedAreaLight<double>>(lights[l].kernel)
+               : shadowed_polygon(std::get<PreparedDiskLight<double>>(lights[l].kernel));
+    // How many positions have two or more copies that keep the whole polygon above their horizon
+    // (or the same normal and a cut one) and are partly shadowed: the shared searches answer them.
+    int whole_shared = 0, cut_shared = 0;
+    for (std::size_t first = 0; first < points.size(); first += kCopies) {
+      int whole = 0;
+      bool shadowed = false;
+      for (std::size_t k = first; k < first + kCopies; ++k) {
+        const AreaView<double> view = make_area_view(polygon, points[k].p);
+        ClipPolygon<double> horizon;
+        clip_to_horizon(polygon, view, points[k].n, horizon);
+        const bool kept_whole = horizon.count == polygon.count &&
+                                std::equal(horizon.d.begin(), horizon.d.begin() + horizon.count, polygon.d.begin());
+        whole += kept_whole;
+        const double open = shade(lights[l], points[k], options_with(SpecularMethod::kNone)).diffuse;
+        const double seen = shade_shadowed(lights[l], points[k], options_with(SpecularMethod::kNone), bvh).diffuse;
+        shadowed = shadowed || (seen > 0 && seen < open * (1 - 1e-6));
+        if (k == first && view.lit && horizon.count >= 3 && !kept_whole) cut_shared += seen > 0 && seen < open * (1 - 1e-6);
+      }
+      whole_shared += whole >= 2 && shadowed;
+    }
+    const ClusterAgreement a = compare_clusters(lights[l], points, bvh, SpecularMethod::kExact, 5);
+    report(l == 0 ? "split vertices, panel" : "split vertices, disk", a);
+    MESSAGE("positions sharing: whole light " << whole_shared << ", same normal and a cut light " << cut_shared);
+    CHECK(whole_shared + cut_shared > 50);
+    CHECK(a.diffuse <= 1e-12);
+    CHECK(a.specular <= 1e-10);
+    CHECK(a.cuts <= 1e-9);
+  }
+}

@@ -108,6 +108,44 @@ TEST_CASE("orient2_sign is orient2's sign, also where plain products lose it") {
   }
 }
 
+TEST_CASE("fast_orient2_sign is orient2's sign or 0, and 0 where plain products lose the sign") {
+  // The near-collinear grid of the test above: wherever plain products give another sign than
+  // orient2, the fast sign must be 0 (undecided), never a wrong sign.
+  const double ulp = std::ldexp(1.0, -53);
+  int undecided = 0, lost = 0;
+  for (int i = 0; i < 256; ++i)
+    for (int j = 0; j < 256; ++j) {
+      const double ax = 0.5 + i * ulp, ay = 0.5 + j * ulp;
+      const int s = sign_of(orient2(ax, ay, 12, 12, 24, 24));
+      const int fast = fast_orient2_sign(ax, ay, 12, 12, 24, 24);
+      volatile double p = (12 - ax) * (24 - ay), q = (12 - ay) * (24 - ax);  // no FMA contraction
+      const bool naive_lost = sign_of(p - q) != s;
+      lost += naive_lost;
+      undecided += fast == 0;
+      CAPTURE(i);
+      CAPTURE(j);
+      REQUIRE((fast == 0 || fast == s));
+      if (naive_lost) REQUIRE(fast == 0);
+    }
+  CHECK(lost > 1000);
+  CHECK(undecided >= lost);
+  // Ordinary points: decided, with orient2's sign.
+  unsigned state = 777;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / 16777216.0 * 2 - 1;
+  };
+  int decided = 0;
+  for (int k = 0; k < 20000; ++k) {
+    double x[6];
+    for (double& v : x) v = next();
+    const int fast = fast_orient2_sign(x[0], x[1], x[2], x[3], x[4], x[5]);
+    CHECK((fast == 0 || fast == sign_of(orient2(x[0], x[1], x[2], x[3], x[4], x[5]))));
+    decided += fast != 0;
+  }
+  CHECK(decided > 19900);
+}
+
 TEST_CASE("angle_between is accurate near 0 and pi where acos(dot) is not") {
   const double tiny = 1e-10;
   const Vec3d a{1, 0, 0};

@@ -136,8 +136,14 @@ std::vector<VertexLight> light_scene_vertices(const Scene& scene, const ScenePla
       done += end - begin;
       if (request.progress) request.progress(done, total);
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_start).count();
-      if (end - begin == chunk && seconds < seconds_low) chunk = std::min(kMaxChunk, 2 * chunk);
-      else if (seconds > seconds_high) chunk = std::max(kMinChunk, chunk / 2);
+      if (end - begin == chunk && seconds < seconds_low) {
+        // Toward the middle of the window at once (2x to 16x): a parallel loop's last clusters
+        // leave a core idle, so a bake of a few short chunks pays that more than once.
+        const double toward_middle = seconds > 0 ? 0.5 * (seconds_low + seconds_high) / seconds : 16.0;
+        chunk = std::min(kMaxChunk, static_cast<std::size_t>(static_cast<double>(chunk) * std::clamp(toward_middle, 2.0, 16.0)));
+      } else if (seconds > seconds_high) {
+        chunk = std::max(kMinChunk, chunk / 2);
+      }
     }
   }
   return out;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/sort/pdqsort/pdqsort.hpp>
+
 #include "core/robust_math.h"
 #include "shadow/silhouette_cluster.h"
 
@@ -463,7 +465,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
       active.push(a.v1, a_lo, a_hi, i);
     }
   }
-  std::sort(other_events.begin(), other_events.end());
+  boost::sort::pdqsort_branchless(other_events.begin(), other_events.end());
   std::vector<double>& events = s.events;
   events.resize(starts.size() + other_events.size());
   std::merge(starts.begin(), starts.end(), other_events.begin(), other_events.end(), events.begin());

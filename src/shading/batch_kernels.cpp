@@ -143,9 +143,9 @@ bool enable_area_specular_batch(BatchChoice& choice, const PreparedLight<double>
 
 bool specular_batch_covers(const BatchChoice& choice, double m) {
   if (!choice.specular_batch || !choice.light) return false;
-  if (choice.area_specular) return m == std::floor(m) && m >= 0 && m <= kAreaSpecularBatchMaxShininess;
-  if (std::holds_alternative<LinearBatchLight>(*choice.light))
-    return m == std::floor(m) && m >= 0 && m <= kLinearSpecularBatchMaxShininess;
+  auto integer_up_to = [m](int largest) { return m == std::floor(m) && m >= 0 && m <= largest; };
+  if (choice.area_specular) return integer_up_to(kAreaSpecularBatchMaxShininess);
+  if (std::holds_alternative<LinearBatchLight>(*choice.light)) return integer_up_to(kLinearSpecularBatchMaxShininess);
   return m >= 0;
 }
 

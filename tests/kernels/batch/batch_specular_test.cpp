@@ -147,6 +147,14 @@ LightSource directional_source(const Vec3d& direction) {
 
 constexpr double kShininesses[] = {0, 1, 2.5, 40, 100, 1e4};
 
+// A patch of 64 points 1e4 from the origin (at `far`), tilted normals, the eye 3 above it.
+SpecPoints far_patch(const Vec3d& far, std::uint64_t seed) {
+  SpecPoints pts;
+  Rng rng(seed);
+  for (int i = 0; i < 64; ++i) pts.add(Vec3d{rng.uniform(-1, 1), rng.uniform(-1, 1), 0} + far, {0.1, -0.1, 1}, far + Vec3d{0.3, 0.2, 3});
+  return pts;
+}
+
 }  // namespace
 
 TEST_CASE("double exp (double_exp.h) against std::exp over [-708, 0]") {
@@ -238,10 +246,8 @@ TEST_CASE("punctual specular batch: stiff cases") {
     CHECK(value[9] == 0);
   }
   SUBCASE("tiny, huge and far distances, and a mesh far from the origin") {
-    SpecPoints pts;
-    Rng rng(7);
     const Vec3d o{1e4, -1e4, 1e4};
-    for (int i = 0; i < 64; ++i) pts.add(Vec3d{rng.uniform(-1, 1), rng.uniform(-1, 1), 0} + o, {0.1, -0.1, 1}, o + Vec3d{0.3, 0.2, 3});
+    const SpecPoints pts = far_patch(o, 7);
     for (double m : {1.0, 40.0, 100.0, 1e4}) {
       for (double falloff : {0.0, 1.0, 2.0, 3.0}) {
         compare_specular("near", point_source(o + Vec3d{0.1, 0, 1e-5}, falloff), pts, m);
@@ -443,10 +449,8 @@ TEST_CASE("linear specular batch: stiff cases") {
     CHECK(compare_linear("steep cut in the lobe's tail", steep, at_far_end, 40).flagged == 0);
   }
   SUBCASE("tiny, huge, far and near tubes, and a mesh far from the origin") {
-    SpecPoints pts;
-    Rng rng(8);
     const Vec3d o{1e4, -1e4, 1e4};
-    for (int i = 0; i < 64; ++i) pts.add(Vec3d{rng.uniform(-1, 1), rng.uniform(-1, 1), 0} + o, {0.1, -0.1, 1}, o + Vec3d{0.3, 0.2, 3});
+    const SpecPoints pts = far_patch(o, 8);
     for (double m : {0.0, 1.0, 40.0, 200.0}) {
       compare_linear("tiny", vlit::test::linear_source(o + Vec3d{0, 0, 1}, o + Vec3d{1e-6, 0, 1}, 2), pts, m);
       compare_linear("huge", vlit::test::linear_source(o + Vec3d{-1e6, 0, 1}, o + Vec3d{1e6, 0.5, 1}, 2), pts, m);

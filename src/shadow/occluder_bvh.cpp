@@ -1,5 +1,7 @@
 #include "shadow/occluder_bvh.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -163,19 +165,22 @@ bool holds(const OccluderBvh& bvh, const UnitHalfSpaces& slab, std::uint32_t nod
 
 OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
     : triangles_(std::move(triangles)), brute_force_(brute_force) {
-  const std::size_t n = triangles_.size();
+  const long n = static_cast<long>(triangles_.size());
   boxes_.resize(n);
   std::vector<Vec3d> centroids(n);
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
     boxes_[i] = box_of(triangles_.corners[i]);
-    bounds_.grow(boxes_[i]);
     centroids[i] = boxes_[i].center();
   }
+  for (const Aabb& box : boxes_) bounds_.grow(box);
   order_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) order_[i] = static_cast<std::uint32_t>(i);
+  for (long i = 0; i < n; ++i) order_[i] = static_cast<std::uint32_t>(i);
   if (n > 0) {
     nodes_.reserve(2 * (n / kLeafSize + 1));
-    build(0, static_cast<std::uint32_t>(n), centroids, 0);
+#pragma omp parallel
+#pragma omp single
+    build(nodes_, 0, static_cast<std::uint32_t>(n), centroids, 0);
   }
   // The triangles are stored in leaf order (the brute-force mode too, so that both number them
   // alike): a query reads neighbouring triangles, and their edges, from neighbouring memory.
@@ -185,7 +190,8 @@ OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
   if (!triangles_.solid.empty()) sorted.solid.resize(n);
   sorted.solid_bounds = triangles_.solid_bounds;
   std::vector<Aabb> boxes(n);
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
     sorted.corners[i] = triangles_.corners[order_[i]];
     sorted.ids[i] = triangles_.ids[order_[i]];
     if (!sorted.solid.empty()) sorted.solid[i] = triangles_.solid[order_[i]];
@@ -196,7 +202,8 @@ OccluderBvh::OccluderBvh(OccluderTriangles triangles, bool brute_force)
   boxes_ = std::move(boxes);
   edges_ = edges_of(triangles_);
   planes_.resize(n);
-  for (std::size_t t = 0; t < n; ++t) {
+#pragma omp parallel for schedule(static)
+  for (long t = 0; t < n; ++t) {
     const auto& c = triangles_.corners[t];
     TrianglePlane& plane = planes_[t];
     plane.normal = cross(c[1] - c[0], c[2] - c[0]);
@@ -242,10 +249,11 @@ bool descend(const Nodes& nodes, const Enter& enter, const Leaf& leaf) {
 }  // namespace
 
 void OccluderBvh::build_cones() {
-  const std::size_t n = triangles_.size();
+  const long n = static_cast<long>(triangles_.size());
   std::vector<Vec3d> unit(n);
-  std::vector<bool> degenerate(n);
-  for (std::size_t t = 0; t < n; ++t) {
+  std::vector<char> degenerate(n);
+#pragma omp parallel for schedule(static)
+  for (long t = 0; t < n; ++t) {
     const TrianglePlane& plane = planes_[t];
     const double len = plane.normal_length;
     // Needles (is_occluder's kSliver, area_visibility.h) hide nothing: their neighbours' edges
@@ -253,28 +261,29 @@ void OccluderBvh::build_cones() {
     degenerate[t] = !(len > 1e-10 * plane.longest_squared) || !std::isfinite(len);
     unit[t] = degenerate[t] ? Vec3d{0, 0, 1} : plane.normal / len;
   }
-  // The cone of a triangle and its edge neighbours, then of the subtrees, bottom-up (children
-  // are stored after their parent).
+  // The cone of a triangle and its edge neighbours (t itself, then the triangles of each of its
+  // edges, t among them), then of the subtrees, bottom-up (children are stored after their parent).
   auto cone_of_triangle = [&](std::uint32_t t) {
     NormalCone cone;
     cone.open = edges_.has_open_edge[t] != 0;
     cone.solid = triangles_.solid.empty() ? -1 : triangles_.solid[t];
-    std::vector<std::uint32_t> members{t};
-    for (int j = 0; j < 3; ++j) {
-      const std::uint32_t e = edges_.edge_of[t][j];
-      for (std::uint32_t k = edges_.first_incident[e]; k < edges_.first_incident[e + 1]; ++k)
-        members.push_back(edges_.incident[k] / 3);
-    }
+    auto for_members = [&](const auto& f) {
+      f(t);
+      for (int j = 0; j < 3; ++j) {
+        const std::uint32_t e = edges_.edge_of[t][j];
+        for (std::uint32_t k = edges_.first_incident[e]; k < edges_.first_incident[e + 1]; ++k) f(edges_.incident[k] / 3);
+      }
+    };
     Vec3d sum{};
     bool unbounded = false;
-    for (std::uint32_t m : members) {
+    for_members([&](std::uint32_t m) {
       sum += unit[m];
       unbounded = unbounded || degenerate[m];
-    }
+    });
     if (unbounded || !(length(sum) > 1e-6)) return cone;
     cone.axis = normalize(sum);
     cone.half_angle = 0;
-    for (std::uint32_t m : members) cone.half_angle = std::max(cone.half_angle, angle_between(cone.axis, unit[m]));
+    for_members([&](std::uint32_t m) { cone.half_angle = std::max(cone.half_angle, angle_between(cone.axis, unit[m])); });
     return cone;
   };
   auto merge = [](const NormalCone& a, const NormalCone& b) {
@@ -289,29 +298,36 @@ void OccluderBvh::build_cones() {
     if (m.half_angle >= M_PI) m.half_angle = 4;
     return m;
   };
-  cones_.assign(nodes_.size(), NormalCone{});
   auto finish = [](NormalCone& c) {
     if (c.half_angle < M_PI / 2) {
       c.cos_half_angle = std::cos(c.half_angle);
       c.sin_half_angle = std::sin(c.half_angle);
     }
   };
-  for (std::size_t i = nodes_.size(); i-- > 0;) {
+  const long node_count = static_cast<long>(nodes_.size());
+  cones_.assign(node_count, NormalCone{});
+  // The leaves first, side by side; then the inner nodes, bottom-up.
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < node_count; ++i) {
     const Node& node = nodes_[i];
-    if (node.count > 0) {
-      NormalCone cone = cone_of_triangle(order_[node.first]);
-      for (std::uint32_t k = node.first + 1; k < node.first + node.count; ++k) cone = merge(cone, cone_of_triangle(order_[k]));
-      cones_[i] = cone;
-    } else {
-      cones_[i] = merge(cones_[i + 1], cones_[node.first]);
-    }
+    if (node.count == 0) continue;
+    NormalCone cone = cone_of_triangle(order_[node.first]);
+    for (std::uint32_t k = node.first + 1; k < node.first + node.count; ++k) cone = merge(cone, cone_of_triangle(order_[k]));
+    finish(cone);
+    cones_[i] = cone;
+  }
+  for (long i = node_count; i-- > 0;) {
+    const Node& node = nodes_[i];
+    if (node.count > 0) continue;
+    cones_[i] = merge(cones_[i + 1], cones_[node.first]);
     finish(cones_[i]);
   }
   // The ball test's margin (ball_side()) must be at least the box test's, 2e-9 (max |w| + max
   // extent) with w = corner - origin: |w| <= |centre| + |origin| + radius and the extent is at most
   // 2 radius (max-norms); 1e-12 |centre| more covers the rounding of the centre itself.
-  balls_.resize(nodes_.size());
-  for (std::size_t i = 0; i < nodes_.size(); ++i) balls_[i] = ball_of(nodes_[i].box);
+  balls_.resize(node_count);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < node_count; ++i) balls_[i] = ball_of(nodes_[i].box);
 }
 
 OccluderBvh::Ball OccluderBvh::ball_of(const Aabb& box) {
@@ -369,30 +385,48 @@ bool OccluderBvh::faces_uniformly(std::uint32_t node, const Vec3d& p, double p_r
   return false;
 }
 
-std::uint32_t OccluderBvh::build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth) {
-  const std::uint32_t index = static_cast<std::uint32_t>(nodes_.size());
-  nodes_.push_back({});
+void OccluderBvh::build(std::vector<Node>& out, std::uint32_t begin, std::uint32_t end, const std::vector<Vec3d>& centroids,
+                        int depth) {
+  const std::uint32_t index = static_cast<std::uint32_t>(out.size());
+  out.push_back({});
   Aabb box, centroid_box;
   for (std::uint32_t i = begin; i < end; ++i) {
     box.grow(boxes_[order_[i]]);
     centroid_box.grow(centroids[order_[i]]);
   }
-  nodes_[index].box = padded(box);
+  out[index].box = padded(box);
   const Vec3d extent = centroid_box.hi - centroid_box.lo;
   if (end - begin <= kLeafSize || depth > 60 || (extent.x <= 0 && extent.y <= 0 && extent.z <= 0)) {
-    nodes_[index].first = begin;
-    nodes_[index].count = end - begin;
-    return index;
+    out[index].first = begin;
+    out[index].count = end - begin;
+    return;
   }
   const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
   const std::uint32_t mid = begin + (end - begin) / 2;
   std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                    [&](std::uint32_t a, std::uint32_t b) { return centroids[a][axis] < centroids[b][axis]; });
-  build(begin, mid, centroids, depth + 1);
-  const std::uint32_t right = build(mid, end, centroids, depth + 1);
-  nodes_[index].first = right;
-  nodes_[index].count = 0;
-  return index;
+  // Large subtrees are built side by side (OpenMP tasks), each into its own array, then appended
+  // in the serial build's order: the same nodes in the same places.
+  constexpr std::uint32_t kParallelSubtree = 1 << 14;
+  if (end - begin < 2 * kParallelSubtree || omp_get_num_threads() < 2) {
+    build(out, begin, mid, centroids, depth + 1);
+    out[index].first = static_cast<std::uint32_t>(out.size());
+    build(out, mid, end, centroids, depth + 1);
+    return;
+  }
+  std::vector<Node> halves[2];
+#pragma omp task default(shared)
+  build(halves[0], begin, mid, centroids, depth + 1);
+  build(halves[1], mid, end, centroids, depth + 1);
+#pragma omp taskwait
+  for (const std::vector<Node>& half : halves) {
+    const std::uint32_t offset = static_cast<std::uint32_t>(out.size());
+    if (&half == &halves[1]) out[index].first = offset;
+    for (Node node : half) {
+      if (node.count == 0) node.first += offset;  // an inner node's right child
+      out.push_back(node);
+    }
+  }
 }
 
 bool OccluderBvh::segment_occluded(const Vec3d& a, const Vec3d& b, const Vec3d& skip, double t_min,

@@ -7,7 +7,8 @@
 //
 // triangles_in_volume skips a node whose box lies wholly outside one of the volume's half-spaces.
 // Build: binary tree, median split of the triangles' centroids along the widest axis of their
-// bounds, leaves of ≤ kLeafSize triangles; O(n log n). Nodes are stored depth-first in one array.
+// bounds, leaves of ≤ kLeafSize triangles; O(n log n), large subtrees side by side on OpenMP
+// tasks. Nodes are stored depth-first in one array, the same whatever the number of threads.
 // The brute-force mode tests every triangle with the same per-triangle tests and gives identical
 // results (tests/shadow/bvh_test.cpp): a node is visited whenever its box could contain a
 // triangle that passes, so the BVH only skips triangles that would fail.
@@ -143,7 +144,10 @@ class OccluderBvh {
   static Ball ball_of(const Aabb& box);
   // -1: the ball lies wholly outside h (unit normal) beyond its margin, 1: wholly inside, 0: neither.
   static int ball_side(const Ball& ball, const HalfSpace& h, double origin_margin);
-  std::uint32_t build(std::uint32_t begin, std::uint32_t end, std::vector<Vec3d>& centroids, int depth);
+  // Appends the subtree over order_[begin, end) to `out`, depth-first; its inner nodes' indices
+  // count from the start of `out`.
+  void build(std::vector<Node>& out, std::uint32_t begin, std::uint32_t end, const std::vector<Vec3d>& centroids,
+             int depth);
   void build_cones();
   bool faces_uniformly(std::uint32_t node, const Vec3d& p, double p_radius) const;
   // Calls leaf(node, held) for every leaf whose box meets the volume, skipping the subtrees for

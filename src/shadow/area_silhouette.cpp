@@ -404,10 +404,16 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   // clamped to R. The segments' lower ends come sorted with `order`; the other events are sorted
   // on their own and merged with them.
   auto clamped = [&](double v) { return std::min(std::max(v, f.rect.y0), f.rect.y1); };
+  // (The scratch arrays of this sweep are sized once and written by index: a push_back per
+  // element was a call, not inlined in this function.)
   std::vector<std::pair<double, int>>& by_start = s.by_start;
-  by_start.clear();
-  for (std::size_t i = 0; i < seg.size(); ++i)
-    if (seg[i].v1 > seg[i].v0) by_start.push_back({seg[i].v0, static_cast<int>(i)});
+  by_start.resize(seg.size());
+  std::size_t rising = 0;
+  for (std::size_t i = 0; i < seg.size(); ++i) {
+    by_start[rising] = {seg[i].v0, static_cast<int>(i)};
+    rising += seg[i].v1 > seg[i].v0;
+  }
+  by_start.resize(rising);
   std::sort(by_start.begin(), by_start.end());  // by v0, ties by index
   std::vector<int>& order = s.order;
   order.clear();
@@ -431,11 +437,11 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     // v0, so one that ended before this one's start has ended for every later one.)
     AreaSilhouetteScratch::ActiveSegments& active = s.active;
     active.clear();
+    s.meets.resize(order.size());
     for (int i : order) {
       const SilhouetteSegment& a = seg[i];
       const double a_lo = std::min(a.u0, a.u1), a_hi = std::max(a.u0, a.u1);
       const std::size_t held = active.index.size();
-      s.meets.resize(held);
       std::size_t ended = 0, meets = 0;
       for (std::size_t j = 0; j < held; ++j) {
         const bool open = active.v1[j] > a.v0;
@@ -480,24 +486,26 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   {
     // The order changes little from one slab to the next (only at its events), so the previous
     // order is kept and repaired by insertion.
-    std::vector<std::pair<double, int>>& sorted = s.sorted;
-    sorted.clear();
-    std::size_t next = 0;
+    std::vector<std::pair<double, int>>& sorted = s.sorted;  // sorted[0, held)
+    sorted.resize(order.size());
+    std::size_t held = 0, next = 0;
     for (int k = 0; k < slabs; ++k) {
       const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
       // The segments still open (the others ended: v1 is an event) and those starting here, each
       // with its u at the slab's middle.
       std::size_t kept = 0;
-      for (const auto& [u, j] : sorted)
+      for (std::size_t i = 0; i < held; ++i) {
+        const int j = sorted[i].second;
         if (seg[j].v1 > lo) sorted[kept++] = {u_at(seg[j], mid), j};
-      sorted.resize(kept);
+      }
+      held = kept;
       while (next < order.size() && seg[order[next]].v0 <= lo) {
         const int j = order[next++];
-        if (seg[j].v1 >= hi) sorted.push_back({u_at(seg[j], mid), j});
+        if (seg[j].v1 >= hi) sorted[held++] = {u_at(seg[j], mid), j};
       }
-      for (std::size_t i = 1; i < sorted.size(); ++i)
+      for (std::size_t i = 1; i < held; ++i)
         for (std::size_t j = i; j > 0 && sorted[j] < sorted[j - 1]; --j) std::swap(sorted[j], sorted[j - 1]);
-      for (const auto& [u, j] : sorted) members.push_back(j);
+      for (std::size_t i = 0; i < held; ++i) members.push_back(sorted[i].second);
       first.push_back(static_cast<int>(members.size()));
     }
   }

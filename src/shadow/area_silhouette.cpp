@@ -478,37 +478,6 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   events.erase(std::unique(events.begin(), events.end()), events.end());
   const int slabs = static_cast<int>(events.size()) - 1;
 
-  // Per slab, the segments spanning it, sorted by u at its middle.
-  std::vector<int>& first = s.slab_first;
-  std::vector<int>& members = s.slab_segments;
-  first.assign(1, 0);
-  members.clear();
-  {
-    // The order changes little from one slab to the next (only at its events), so the previous
-    // order is kept and repaired by insertion.
-    std::vector<std::pair<double, int>>& sorted = s.sorted;  // sorted[0, held)
-    sorted.resize(order.size());
-    std::size_t held = 0, next = 0;
-    for (int k = 0; k < slabs; ++k) {
-      const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
-      // The segments still open (the others ended: v1 is an event) and those starting here, each
-      // with its u at the slab's middle.
-      std::size_t kept = 0;
-      for (std::size_t i = 0; i < held; ++i) {
-        const int j = sorted[i].second;
-        if (seg[j].v1 > lo) sorted[kept++] = {u_at(seg[j], mid), j};
-      }
-      held = kept;
-      while (next < order.size() && seg[order[next]].v0 <= lo) {
-        const int j = order[next++];
-        if (seg[j].v1 >= hi) sorted[held++] = {u_at(seg[j], mid), j};
-      }
-      for (std::size_t i = 1; i < held; ++i)
-        for (std::size_t j = i; j > 0 && sorted[j] < sorted[j - 1]; --j) std::swap(sorted[j], sorted[j - 1]);
-      for (std::size_t i = 0; i < held; ++i) members.push_back(sorted[i].second);
-      first.push_back(static_cast<int>(members.size()));
-    }
-  }
   // Left steps summed per event line: t in slab k's leftmost trapezoid is t0 + prefix[k].
   std::vector<int>& prefix = s.prefix;
   prefix.assign(slabs, 0);
@@ -517,6 +486,20 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     if (k >= 1 && k < slabs) prefix[k] += w;
   }
   for (int k = 1; k < slabs; ++k) prefix[k] += prefix[k - 1];
+
+  // The segments spanning slab k (v0 <= its bottom, v1 >= its top), sorted by u at its middle,
+  // ties by index, into `members`.
+  std::vector<int>& members = s.slab_segments;
+  std::vector<std::pair<double, int>>& keyed = s.sorted;
+  auto segments_of_slab = [&](int k) {
+    const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
+    keyed.clear();
+    for (std::size_t next = 0; next < order.size() && seg[order[next]].v0 <= lo; ++next)
+      if (seg[order[next]].v1 >= hi) keyed.push_back({u_at(seg[order[next]], mid), order[next]});
+    std::sort(keyed.begin(), keyed.end());
+    members.resize(keyed.size());
+    for (std::size_t i = 0; i < keyed.size(); ++i) members[i] = keyed[i].second;
+  };
 
   // Reference: t at a point inside L, from one shadow ray; tall slabs and wide trapezoids first
   // (the slabs are taken tallest first, ties lowest first; one or two are usually enough, so each
@@ -535,17 +518,18 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     std::iter_swap(by_height.begin() + next_slab, std::min_element(by_height.begin() + next_slab, by_height.end(), taller));
     const int k = by_height[next_slab];
     const double mid = 0.5 * (events[k] + events[k + 1]);
-    const int n = first[k + 1] - first[k];
+    segments_of_slab(k);
+    const int n = static_cast<int>(members.size());
     std::vector<std::pair<double, int>>& gaps = s.sorted;  // (width, index of the segment on its left)
     gaps.clear();
     for (int i = 0; i + 1 < n; ++i) {
-      const double a = u_at(seg[members[first[k] + i]], mid), b = u_at(seg[members[first[k] + i + 1]], mid);
+      const double a = u_at(seg[members[i]], mid), b = u_at(seg[members[i + 1]], mid);
       if (b > a) gaps.push_back({b - a, i});
     }
     std::sort(gaps.begin(), gaps.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
     for (const auto& [width, i] : gaps) {
       if (rays >= kMaxReferenceRays) break;
-      const double a = u_at(seg[members[first[k] + i]], mid);
+      const double a = u_at(seg[members[i]], mid);
       const double u = a + 0.5 * width;
       const Vec3d x = f.u * u + f.v * mid;  // relative to the light's centre
       if (winding_number(horizon_clipped, view, x) == 0) continue;
@@ -553,7 +537,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
       const int d = depth_at(f, f.center + x, occluders, s);
       if (d < 0) continue;
       int left = 0;
-      for (int j = 0; j <= i; ++j) left += step[members[first[k] + j]];
+      for (int j = 0; j <= i; ++j) left += step[members[j]];
       t0 = d - left - prefix[k];  // t inside L is d; t in the leftmost trapezoid of slab 0
       have_reference = true;
       break;
@@ -598,24 +582,46 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   auto forget_open = [&] {
     for (const Open& o : open) open_at[o.a] = -1;
   };
+  // The slabs bottom-up, each with its segments in order of u at its middle (ties by index): the
+  // order changes little from one slab to the next (only at its events), so the previous one is
+  // kept and repaired by insertion; then t is walked across the slab.
+  std::vector<std::pair<double, int>>& sorted = s.sorted;  // sorted[0, held)
+  sorted.resize(order.size());
+  std::size_t held = 0, next = 0;
   for (int k = 0; k < slabs; ++k) {
+    const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
+    // The segments still open (the others ended: v1 is an event) and those starting here, each
+    // with its u at the slab's middle.
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < held; ++i) {
+      const int j = sorted[i].second;
+      if (seg[j].v1 > lo) sorted[kept++] = {u_at(seg[j], mid), j};
+    }
+    held = kept;
+    while (next < order.size() && seg[order[next]].v0 <= lo) {
+      const int j = order[next++];
+      if (seg[j].v1 >= hi) sorted[held++] = {u_at(seg[j], mid), j};
+    }
+    for (std::size_t i = 1; i < held; ++i)
+      for (std::size_t j = i; j > 0 && sorted[j] < sorted[j - 1]; --j) std::swap(sorted[j], sorted[j - 1]);
+
     now.clear();
-    if (events[k + 1] - events[k] < thin) {
-      for (const Open& o : open) close(o, events[k]);
+    if (hi - lo < thin) {
+      for (const Open& o : open) close(o, lo);
       forget_open();
       open.clear();
       continue;
     }
     int t = t0 + prefix[k];
     if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;
-    const int n = first[k + 1] - first[k];
+    const int n = static_cast<int>(held);
     continued.assign(open.size(), 0);
     for (int i = 0; i < n; ++i) {
-      t += step[members[first[k] + i]];
+      t += step[sorted[i].second];
       if (t < 0) return ++s.undecided, SilhouetteVisibility::kUndecided;
       if (t == 0 && i + 1 < n) {
-        const int a = members[first[k] + i], b = members[first[k] + i + 1];
-        double v_start = events[k];
+        const int a = sorted[i].second, b = sorted[i + 1].second;
+        double v_start = lo;
         const int j = open_at[a];
         if (j >= 0 && open[j].b == b) {
           v_start = open[j].v_start;
@@ -626,7 +632,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     }
     if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;
     for (std::size_t j = 0; j < open.size(); ++j)
-      if (!continued[j]) close(open[j], events[k]);
+      if (!continued[j]) close(open[j], lo);
     forget_open();
     std::swap(open, now);
     for (std::size_t j = 0; j < open.size(); ++j) open_at[open[j].a] = static_cast<int>(j);

@@ -88,7 +88,8 @@ struct AreaSilhouetteScratch {
     }
   } active;
   std::vector<int> meets;  // the crossing search's list of held segments that pass its first test
-  std::vector<int> order, slab_first, slab_segments, step, prefix, by_height;
+  std::vector<int> order, step, prefix, by_height;
+  std::vector<int> slab_segments;  // the segments spanning the slab of the reference ray, in order of u
   std::vector<std::pair<double, int>> by_start;  // (v0, segment), for the events and the crossing search
   std::vector<std::pair<double, int>> sorted;    // a slab's (u, segment); then the reference ray's gaps
   std::vector<std::pair<double, double>> light_uv;

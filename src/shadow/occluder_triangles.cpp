@@ -1,32 +1,49 @@
 #include "shadow/occluder_triangles.h"
 
+#include <omp.h>
+
+#include <algorithm>
 #include <map>
-#include <tuple>
+
+#include <boost/sort/block_indirect_sort/block_indirect_sort.hpp>
+
+#include "shadow/convex_volume.h"
 
 namespace vlit {
 
 bool is_closed_surface(const std::vector<const ScenePrimitive*>& parts) {
-  using Key = std::tuple<double, double, double, double, double, double>;
-  std::map<Key, int> directed;
+  // The directed edges by corner position, sorted: the surface is closed when no edge repeats and
+  // the reversed edges, sorted, are the same list (each edge met by exactly one reversed edge).
+  // A corner that is not finite (its triangles are left out of the occluders) leaves a hole.
+  struct Directed {
+    Vec3d a, b;
+  };
+  std::vector<Directed> edges;
   for (const ScenePrimitive* prim : parts) {
     const std::size_t n = prim->positions.size();
+    edges.reserve(edges.size() + prim->triangles.size());
     for (std::size_t t = 0; t + 2 < prim->triangles.size(); t += 3)
       for (int e = 0; e < 3; ++e) {
         const std::uint32_t a = prim->triangles[t + e], b = prim->triangles[t + (e + 1) % 3];
         if (a >= n || b >= n) return false;
         const Vec3d& pa = prim->positions[a];
         const Vec3d& pb = prim->positions[b];
-        if (pa == pb) return false;
-        if (++directed[Key{pa.x, pa.y, pa.z, pb.x, pb.y, pb.z}] > 1) return false;
+        if (pa == pb || !is_finite(pa) || !is_finite(pb)) return false;
+        edges.push_back({pa, pb});
       }
   }
-  if (directed.empty()) return false;
-  for (const auto& [key, count] : directed) {
-    const auto& [ax, ay, az, bx, by, bz] = key;
-    const auto it = directed.find(Key{bx, by, bz, ax, ay, az});
-    if (it == directed.end() || it->second != 1) return false;
-  }
-  return true;
+  if (edges.empty()) return false;
+  std::vector<Directed> reversed(edges.size());
+  for (std::size_t i = 0; i < edges.size(); ++i) reversed[i] = {edges[i].b, edges[i].a};
+  auto less = [](const Directed& p, const Directed& q) {
+    return p.a != q.a ? lexicographic_less(p.a, q.a) : lexicographic_less(p.b, q.b);
+  };
+  auto same = [](const Directed& p, const Directed& q) { return p.a == q.a && p.b == q.b; };
+  const auto threads = static_cast<std::uint32_t>(std::max(1, omp_get_max_threads()));
+  boost::sort::block_indirect_sort(edges.begin(), edges.end(), less, threads);
+  if (std::adjacent_find(edges.begin(), edges.end(), same) != edges.end()) return false;
+  boost::sort::block_indirect_sort(reversed.begin(), reversed.end(), less, threads);
+  return std::equal(edges.begin(), edges.end(), reversed.begin(), same);
 }
 
 OccluderTriangles occluders_of(const Scene& scene) {

@@ -34,7 +34,8 @@ struct OccluderTriangles {
 // Every triangle of every primitive (transforms are already applied in a Scene). Triangles with
 // an out-of-range index or a non-finite corner are left out (they hide nothing). A primitive is
 // marked closed when every directed edge, by corner position (so split vertices still join),
-// is matched by exactly one reversed edge, and wound outward (positive signed volume; a closed
+// is matched by exactly one reversed edge (a non-finite corner or a zero-length side makes it
+// open), and wound outward (positive signed volume; a closed
 // surface wound inward, such as a room seen from inside, is not culled). The primitives of one
 // glTF node's mesh are tested together (a mesh split by material is closed only as a whole).
 bool is_closed_surface(const std::vector<const ScenePrimitive*>& parts);

@@ -13,17 +13,6 @@ using namespace vlit::test;
 
 namespace {
 
-ScenePrimitive primitive_of(const std::vector<Tri>& tris) {  // split vertices: 3 per triangle
-  ScenePrimitive prim;
-  for (const Tri& t : tris)
-    for (const Vec3d& c : t) {
-      prim.triangles.push_back(static_cast<std::uint32_t>(prim.positions.size()));
-      prim.positions.push_back(c);
-      prim.normals.push_back({0, 0, 1});
-    }
-  return prim;
-}
-
 bool closed_by_pairs(const std::vector<Tri>& tris) {
   if (tris.empty()) return false;
   for (const Tri& t : tris)

@@ -389,13 +389,7 @@ TEST_CASE("back faces of a closed mesh are skipped without changing the result")
   // by position. The same triangles without the closed flag are the reference.
   std::vector<Tri> tris;
   add_box(tris, Vec3d{-0.4, -0.3, 0.8}, Vec3d{0.3, 0.4, 1.3});
-  ScenePrimitive box;
-  for (const Tri& t : tris)
-    for (const Vec3d& c : t) {
-      box.triangles.push_back(static_cast<std::uint32_t>(box.positions.size()));
-      box.positions.push_back(c);
-      box.normals.push_back({0, 0, 1});
-    }
+  const ScenePrimitive box = primitive_of(tris);
   CHECK(is_closed_surface({&box}));
   ScenePrimitive open_box = box;
   open_box.triangles.resize(open_box.triangles.size() - 6);  // drop one face
@@ -430,13 +424,7 @@ TEST_CASE("a closed mesh wound inward (a room modelled from inside) hides a ligh
   std::vector<Tri> tris;
   add_box(tris, Vec3d{-1.5, -1.5, 0.5}, Vec3d{1.5, 1.5, 3});
   for (Tri& t : tris) std::swap(t[1], t[2]);  // wound inward
-  ScenePrimitive room;
-  for (const Tri& t : tris)
-    for (const Vec3d& c : t) {
-      room.triangles.push_back(static_cast<std::uint32_t>(room.positions.size()));
-      room.positions.push_back(c);
-      room.normals.push_back({0, 0, 1});
-    }
+  const ScenePrimitive room = primitive_of(tris);
   REQUIRE(is_closed_surface({&room}));
   Scene scene;
   scene.primitives.push_back(room);

@@ -22,6 +22,19 @@ inline OccluderBvh make_bvh(const std::vector<Tri>& tris, bool brute_force = fal
   return OccluderBvh(std::move(t), brute_force);
 }
 
+// The triangles as one scene primitive with split vertices (three per triangle, as with
+// per-face normals): joined by position only.
+inline ScenePrimitive primitive_of(const std::vector<Tri>& tris) {
+  ScenePrimitive prim;
+  for (const Tri& t : tris)
+    for (const Vec3d& c : t) {
+      prim.triangles.push_back(static_cast<std::uint32_t>(prim.positions.size()));
+      prim.positions.push_back(c);
+      prim.normals.push_back({0, 0, 1});
+    }
+  return prim;
+}
+
 // Two triangles covering the rectangle corner + s e1 + t e2, s, t in [0, 1].
 inline void add_quad(std::vector<Tri>& tris, const Vec3d& corner, const Vec3d& e1, const Vec3d& e2) {
   tris.push_back({corner, corner + e1, corner + e1 + e2});

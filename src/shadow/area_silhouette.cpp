@@ -404,8 +404,8 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   // clamped to R. The segments' lower ends come sorted with `order`; the other events are sorted
   // on their own and merged with them.
   auto clamped = [&](double v) { return std::min(std::max(v, f.rect.y0), f.rect.y1); };
-  // (The scratch arrays of this sweep are sized once and written by index: a push_back per
-  // element was a call, not inlined in this function.)
+  // (This array, the crossing search's list and the slabs' order below are sized once per query
+  // and written by index: a push_back per element was a call, not inlined in this function.)
   std::vector<std::pair<double, int>>& by_start = s.by_start;
   by_start.resize(seg.size());
   std::size_t rising = 0;

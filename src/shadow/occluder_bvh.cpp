@@ -419,14 +419,16 @@ void OccluderBvh::build(std::vector<Node>& out, std::uint32_t begin, std::uint32
   build(halves[0], begin, mid, centroids, depth + 1);
   build(halves[1], mid, end, centroids, depth + 1);
 #pragma omp taskwait
-  for (const std::vector<Node>& half : halves) {
+  auto append = [&](const std::vector<Node>& half) {
     const std::uint32_t offset = static_cast<std::uint32_t>(out.size());
-    if (&half == &halves[1]) out[index].first = offset;
     for (Node node : half) {
       if (node.count == 0) node.first += offset;  // an inner node's right child
       out.push_back(node);
     }
-  }
+  };
+  append(halves[0]);
+  out[index].first = static_cast<std::uint32_t>(out.size());
+  append(halves[1]);
 }
 
 bool OccluderBvh::segment_occluded(const Vec3d& a, const Vec3d& b, const Vec3d& skip, double t_min,

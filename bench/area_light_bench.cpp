@@ -58,7 +58,8 @@ Vec3d random_unit(std::mt19937_64& rng) {
 
 // sides: 3, 4, 8, or 0 for a disk.
 // real_m: the same cases with m = 10^(3u) not rounded (glTF roughness gives real m).
-std::vector<Case> make_cases(int sides, int count, bool real_m = false) {
+// references = false leaves ref_diffuse and ref_specular 0 (timing only).
+std::vector<Case> make_cases(int sides, int count, bool real_m = false, bool references = true) {
   std::mt19937_64 rng(1000 + sides);
   std::uniform_real_distribution<double> u01(0, 1);
   std::vector<Case> out;
@@ -99,6 +100,10 @@ std::vector<Case> make_cases(int sides, int count, bool real_m = false) {
       for (const Vec3d& q : c.polygon) above = above && dot(n, q - p) > 0;
     }
     if (!above) continue;
+    if (!references) {
+      out.push_back(c);
+      continue;
+    }
     if (sides == 0) {
       test::DiskQuery q;
       q.center = center; q.normal = normal; q.radius = size; q.p = p; q.n = n; q.rv = rv; q.m = m;
@@ -228,10 +233,67 @@ void row(const char* shape, const char* method, double err, double ns, double ba
               baseline_ns > 0 ? ratio(baseline_ns / ns).c_str() : "—", note.c_str());
 }
 
+// --closed-by-m: the integer-m closed form (area_specular_closed.h) alone and `--specular exact`
+// (closed where within its bound, adaptive otherwise) at fixed m on each polygon's cases (m
+// replaced), with how many cases the closed form accepts and its largest difference from the
+// adaptive form at tol 1e-13 on those (the closed form's accuracy against the Boost.Math
+// references is tests/kernels/area/area_specular_closed_test.cpp's). Issue 21's scalar bar:
+// <= 500 ns per evaluation for m <= 100.
+int closed_by_m(int count) {
+  std::printf("| shape | m | closed form alone ns/eval | accepted | adaptive alone tol 1e-9 ns/eval | exact tol 1e-9 ns/eval | max rel. diff closed vs adaptive (accepted) |\n");
+  std::printf("|---|---|---|---|---|---|---|\n");
+  const struct { int sides; const char* name; } shapes[] = {{3, "triangle"}, {4, "quad"}, {8, "8-gon"}};
+  for (const auto& shape : shapes) {
+    const std::vector<Case> base = make_cases(shape.sides, count, false, false);
+    for (int m : {0, 1, 2, 10, 30, 100, 300, 1000, 3000, 10000}) {
+      std::vector<Case> cases = base;
+      for (Case& c : cases) c.sp.shininess = m;
+      struct Visible {
+        AreaView<double> view;
+        ClipPolygon<double> polygon;
+      };
+      std::vector<Visible> visible(cases.size());
+      for (std::size_t i = 0; i < cases.size(); ++i) {
+        visible[i].view = make_area_view(cases[i].prepared, cases[i].sp.p);
+        if (visible[i].view.lit) clip_to_horizon(cases[i].prepared, visible[i].view, cases[i].sp.n, visible[i].polygon);
+      }
+      // The closed form from the horizon-clipped polygon, as the dispatch calls it.
+      const auto closed = [&](const Case& c) {
+        const Visible& v = visible[std::size_t(&c - cases.data())];
+        return area_specular_closed(v.polygon, v.view, c.sp.rv, int(c.sp.shininess)).value;
+      };
+      const auto adaptive = [&](const Case& c) {
+        const Visible& v = visible[std::size_t(&c - cases.data())];
+        return area_specular_exact(v.polygon, v.view, c.sp.rv, c.sp.shininess, 1e-9);
+      };
+      int accepted = 0;
+      double worst = 0;
+      for (std::size_t i = 0; i < cases.size(); ++i) {
+        const AreaSpecularClosed<double> r =
+            area_specular_closed(visible[i].polygon, visible[i].view, cases[i].sp.rv, m);
+        if (!r.accepted) continue;
+        ++accepted;
+        const double ref = area_specular_exact(visible[i].polygon, visible[i].view, cases[i].sp.rv, double(m), 1e-13);
+        if (ref != 0) worst = std::max(worst, std::fabs(r.value - ref) / std::fabs(ref));
+      }
+      SpecularOptions o;
+      o.method = SpecularMethod::kExact;
+      o.exact_tolerance = 1e-9;
+      const auto exact = [&](const Case& c) { return shade_area(c.prepared, c.sp, o).specular; };
+      std::printf("| %s | %d | %.0f | %d / %d | %.0f | %.0f | %.1e |\n", shape.name, m, time_ns(cases, closed), accepted,
+                  int(cases.size()), time_ns(cases, adaptive), time_ns(cases, exact), worst);
+      std::fflush(stdout);
+    }
+  }
+  std::fprintf(stderr, "(checksum %g)\n", g_sink);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  if (argc > 1 && std::strcmp(argv[1], "--closed-by-m") == 0) return closed_by_m(128);
   const int count = quick ? 4 : 128;
   std::printf("| shape | method | max rel. error | ns/eval | evals/s | speed-up vs matching product rule | product rule |\n");
   std::printf("|---|---|---|---|---|---|---|\n");

@@ -44,9 +44,12 @@
 //   (m <= 40), behind the lobe) at m = 0, 1, 40, 1e4 through `--specular exact`: max 2.9e-12,
 //   all finite.
 // Float: the float instantiation computes in double (AreaReal) and rounds once.
-// Cost: bench/area_light_bench.cpp rows "closed form alone" and "adaptive form alone".
+// Cost: O(m) per edge, the edges' chains in step (docs/area-lights.md "Speed");
+// bench/area_light_bench.cpp rows "closed form alone" and "adaptive form alone", and its
+// --closed-by-m table (ns per evaluation at fixed m).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -71,23 +74,28 @@ struct ArvoEdge {
 };
 
 // False for an edge that adds nothing: a x b = 0 (zero-length, or P on its line), or Rv in the
-// edge's plane (wn = 0).
+// edge's plane (wn = 0). ah, bh: the unit vectors of a and b (a vertex's is shared by its two
+// edges); with_theta = false leaves theta unset (even m does not need the arc).
 template <class R>
-bool arvo_edge(const AreaView<R>& view, const Vec3<R>& rv, const Vec3<R>& di, const Vec3<R>& dj, ArvoEdge<R>& e) {
+bool arvo_edge(const AreaView<R>& view, const Vec3<R>& rv, const Vec3<R>& di, const Vec3<R>& dj, const Vec3<R>& ah,
+               const Vec3<R>& bh, bool with_theta, ArvoEdge<R>& e) {
   const Vec3<R> cr = edge_cross(view.D, di, dj);  // a x b
   const R len_cr = length(cr);
   if (!(len_cr > R(0))) return false;
   const Vec3<R> nh = cr / len_cr;
   e.wn = dot(rv, nh);
   if (e.wn == R(0)) return false;
-  const Vec3<R> a = view.D + di, b = view.D + dj;
-  const Vec3<R> ah = normalize(a), bh = normalize(b);
-  e.theta = std::atan2(len_cr, dot(a, b));
+  e.theta = with_theta ? std::atan2(len_cr, dot(view.D + di, view.D + dj)) : R(0);
   e.c0 = dot(rv, ah);
   e.c0p = dot(rv, cross(nh, ah));
   e.c1 = dot(rv, bh);
   e.c1p = dot(rv, cross(nh, bh));
   return true;
+}
+
+template <class R>
+bool arvo_edge(const AreaView<R>& view, const Vec3<R>& rv, const Vec3<R>& di, const Vec3<R>& dj, ArvoEdge<R>& e) {
+  return arvo_edge(view, rv, di, dj, normalize(view.D + di), normalize(view.D + dj), true, e);
 }
 
 template <class R>
@@ -107,35 +115,62 @@ AreaSpecularClosed<R> area_specular_closed(const ClipPolygon<R>& horizon_clipped
   clip_halfspace(horizon_clipped.d.data(), horizon_clipped.count, rv, dot(rv, view.D), poly);
   const int n = poly.count;
   if (n < 3) return r;
-  R sum = 0, mag = 0;
-  for (int i = 0; i < n; ++i) {
+  // The edges' chains run in step: the inner loops over edges are independent and vectorise (one
+  // edge's chain alone waits on its previous step's result at every step). m = 0 has no chains.
+  std::array<R, kMaxClipVertices> wn, f, f_mag, p0, p1, q0, q1, c2, c0p, c1p, s, s_mag;  // [0, edges) written
+  int edges = 0;
+  const Vec3<R> first = m > 0 ? normalize(view.D + poly.d[0]) : Vec3<R>{};
+  Vec3<R> ah = first;  // the direction of edge i's first vertex from P (shared with edge i - 1)
+  for (int i = 0; i < n && m > 0; ++i) {
     ArvoEdge<R> edge;
-    if (!arvo_edge(view, rv, poly.d[i], poly.d[(i + 1) % n], edge)) continue;
-    const auto [wn, theta, c0, c0p, c1, c1p] = edge;
-    const R c2 = c0 * c0 + c0p * c0p;
-    if (m == 0) continue;
-    // F(k0) and the chain k0, k0 + 2, .., m - 1.
-    int k = (m % 2 == 1) ? 0 : 1;
-    R f = k == 0 ? theta : c0p - c1p;
-    R f_mag = k == 0 ? theta : std::fabs(c0p) + std::fabs(c1p);
-    R p0 = k == 0 ? c0 : c0 * c0, p1 = k == 0 ? c1 : c1 * c1;  // c^{k+1} at both ends
-    const R q0 = c0 * c0, q1 = c1 * c1;
-    R s = 0, s_mag = 0;
-    for (;;) {
-      s += f;
-      s_mag += f_mag;
-      if (k + 2 > m - 1) break;
-      // F(k + 2) = ((k + 1) C^2 F(k) - [c^{k+1} c']) / (k + 2)
-      const R e1 = p1 * c1p, e0 = p0 * c0p;
-      const R kk = R(k + 2);
-      f = (R(k + 1) * c2 * f - (e1 - e0)) / kk;
-      f_mag = (R(k + 1) * c2 * f_mag + std::fabs(e1) + std::fabs(e0)) / kk;
-      p0 *= q0;
-      p1 *= q1;
-      k += 2;
+    const int j = i + 1 < n ? i + 1 : 0;
+    const Vec3<R> bh = j == 0 ? first : normalize(view.D + poly.d[j]);
+    const bool used = arvo_edge(view, rv, poly.d[i], poly.d[j], ah, bh, m % 2 == 1, edge);
+    ah = bh;
+    if (!used) continue;
+    const int e = edges++;
+    wn[e] = edge.wn;
+    c2[e] = edge.c0 * edge.c0 + edge.c0p * edge.c0p;
+    c0p[e] = edge.c0p;
+    c1p[e] = edge.c1p;
+    q0[e] = edge.c0 * edge.c0;
+    q1[e] = edge.c1 * edge.c1;
+    s[e] = 0;
+    s_mag[e] = 0;
+    // F(k0) and c^{k0+1} at both ends, k0 = 0 (m odd) or 1 (m even)
+    if (m % 2 == 1) {
+      f[e] = edge.theta;
+      f_mag[e] = edge.theta;
+      p0[e] = edge.c0;
+      p1[e] = edge.c1;
+    } else {
+      f[e] = edge.c0p - edge.c1p;
+      f_mag[e] = std::fabs(edge.c0p) + std::fabs(edge.c1p);
+      p0[e] = q0[e];
+      p1[e] = q1[e];
     }
-    sum += wn * s;
-    mag += std::fabs(wn) * s_mag;
+  }
+  // The chain k0, k0 + 2, .., m - 1: each step adds F(k) to the sums and moves to F(k + 2).
+  const int k0 = (m % 2 == 1) ? 0 : 1;
+  for (int k = k0; k + 2 <= m - 1; k += 2) {
+    // F(k + 2) = ((k + 1) C^2 F(k) - [c^{k+1} c']) / (k + 2), the division as a product with
+    // 1 / (k + 2) (one division per step for all edges, off the chains; the batch kernel
+    // area_specular_batch.h does the same, so the two agree to the bit)
+    const R k1 = R(k + 1), inv = R(1) / R(k + 2);
+    for (int e = 0; e < edges; ++e) {
+      s[e] += f[e];
+      s_mag[e] += f_mag[e];
+      const R e1 = p1[e] * c1p[e], e0 = p0[e] * c0p[e];
+      f[e] = (k1 * c2[e] * f[e] - (e1 - e0)) * inv;
+      f_mag[e] = (k1 * c2[e] * f_mag[e] + std::fabs(e1) + std::fabs(e0)) * inv;
+      p0[e] *= q0[e];
+      p1[e] *= q1[e];
+    }
+  }
+  R sum = 0, mag = 0;
+  for (int e = 0; e < edges; ++e) {  // the last F(m - 1) added here
+    sum += wn[e] * (s[e] + f[e]);
+    mag += std::fabs(wn[e]) * (s_mag[e] + f_mag[e]);
   }
   R total = -view.orient * sum;
   if (m % 2 == 0) {

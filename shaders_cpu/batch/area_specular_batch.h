@@ -152,10 +152,10 @@ inline void area_specular_chain(int m, int e, int lanes, AreaSpecularBlock& blk)
     s_mag += f_mag;
     for (; k + 2 <= m - 1; k += 2) {
       const double e1 = p1 * c1p, e0 = p0 * c0p;
-      const double kk = double(k + 2);
+      const double inv = 1. / double(k + 2);  // as area_specular_closed.h: a product with 1 / (k + 2)
       const double ae1 = e1 < 0. ? -e1 : e1, ae0 = e0 < 0. ? -e0 : e0;
-      f = (double(k + 1) * c2 * f - (e1 - e0)) / kk;
-      f_mag = (double(k + 1) * c2 * f_mag + ae1 + ae0) / kk;
+      f = (double(k + 1) * c2 * f - (e1 - e0)) * inv;
+      f_mag = (double(k + 1) * c2 * f_mag + ae1 + ae0) * inv;
       p0 *= q0;
       p1 *= q1;
       s += f;

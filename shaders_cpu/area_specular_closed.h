@@ -155,7 +155,8 @@ AreaSpecularClosed<R> area_specular_closed(const ClipPolygon<R>& horizon_clipped
   for (int k = k0; k + 2 <= m - 1; k += 2) {
     // F(k + 2) = ((k + 1) C^2 F(k) - [c^{k+1} c']) / (k + 2), the division as a product with
     // 1 / (k + 2) (one division per step for all edges, off the chains; the batch kernel
-    // area_specular_batch.h does the same, so the two agree to the bit)
+    // area_specular_batch.h does the same: `batch_kernel_tests -tc='area specular batch*' -s`
+    // measures 0 between the two on every lane)
     const R k1 = R(k + 1), inv = R(1) / R(k + 2);
     for (int e = 0; e < edges; ++e) {
       s[e] += f[e];

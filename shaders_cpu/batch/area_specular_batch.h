@@ -80,31 +80,22 @@ inline int area_specular_setup(const PreparedAreaLight<double>& pl, int m, const
   if (count < 3) return 0;
   b.lit[l] = true;
   b.orient[l] = view.orient;
+  // Per edge as area_specular_closed.h sets it up (arvo_edge; each vertex's direction normalised
+  // once, the arc for odd m only); an edge that adds nothing gets zeros (wn = 0).
+  const Vec3d first = normalize(view.D + poly.d[0]);
+  Vec3d ah = first;
   for (int i = 0; i < count; ++i) {
-    const Vec3d& di = poly.d[i];
-    const Vec3d& dj = poly.d[(i + 1) % count];
-    const Vec3d cr = edge_cross(view.D, di, dj);
-    const double len_cr = length(cr);
-    double wn = 0, theta = 0, c0 = 0, c0p = 0, c1 = 0, c1p = 0;
-    if (len_cr > 0) {
-      const Vec3d nh = cr / len_cr;
-      wn = dot(rv, nh);
-      if (wn != 0) {
-        const Vec3d a = view.D + di, bb = view.D + dj;
-        const Vec3d ah = normalize(a), bh = normalize(bb);
-        theta = std::atan2(len_cr, dot(a, bb));
-        c0 = dot(rv, ah);
-        c0p = dot(rv, cross(nh, ah));
-        c1 = dot(rv, bh);
-        c1p = dot(rv, cross(nh, bh));
-      }
-    }
-    b.wn[i * B + l] = wn;
-    b.theta[i * B + l] = theta;
-    b.c0[i * B + l] = c0;
-    b.c0p[i * B + l] = c0p;
-    b.c1[i * B + l] = c1;
-    b.c1p[i * B + l] = c1p;
+    const int j = i + 1 < count ? i + 1 : 0;
+    const Vec3d bh = j == 0 ? first : normalize(view.D + poly.d[j]);
+    ArvoEdge<double> e;
+    if (!arvo_edge(view, rv, poly.d[i], poly.d[j], ah, bh, m % 2 == 1, e)) e = {0, 0, 0, 0, 0, 0};
+    ah = bh;
+    b.wn[i * B + l] = e.wn;
+    b.theta[i * B + l] = e.theta;
+    b.c0[i * B + l] = e.c0;
+    b.c0p[i * B + l] = e.c0p;
+    b.c1[i * B + l] = e.c1;
+    b.c1p[i * B + l] = e.c1p;
   }
   if (m % 2 == 0) {
     const Vec3d a = view.D + poly.d[0];

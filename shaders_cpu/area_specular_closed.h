@@ -98,6 +98,26 @@ bool arvo_edge(const AreaView<R>& view, const Vec3<R>& rv, const Vec3<R>& di, co
   return arvo_edge(view, rv, di, dj, normalize(view.D + di), normalize(view.D + dj), true, e);
 }
 
+// The signed solid angle of a polygon seen from P: the fan from its first vertex of Van
+// Oosterom-Strackee triangle solid angles; magnitude receives the sum of their absolute values.
+template <class R>
+R fan_solid_angle(const ClipPolygon<R>& poly, const AreaView<R>& view, R& magnitude) {
+  const Vec3<R> a = view.D + poly.d[0];
+  const R la = length(a);
+  R omega = 0;
+  magnitude = 0;
+  for (int i = 1; i + 1 < poly.count; ++i) {
+    const Vec3<R> b = view.D + poly.d[i], c = view.D + poly.d[i + 1];
+    const R lb = length(b), lc = length(c);
+    const R num = dot(a, cross(b, c));
+    const R den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
+    const R t = R(2) * std::atan2(num, den);
+    omega += t;
+    magnitude += std::fabs(t);
+  }
+  return omega;
+}
+
 template <class R>
 struct AreaSpecularClosed {
   R value{0};
@@ -175,20 +195,8 @@ AreaSpecularClosed<R> area_specular_closed(const ClipPolygon<R>& horizon_clipped
   }
   R total = -view.orient * sum;
   if (m % 2 == 0) {
-    // Solid angle of the clipped polygon: fan of signed Van Oosterom-Strackee triangles.
-    const Vec3<R> a = view.D + poly.d[0];
-    const R la = length(a);
-    R omega = 0, omega_mag = 0;
-    for (int i = 1; i + 1 < n; ++i) {
-      const Vec3<R> b = view.D + poly.d[i], c = view.D + poly.d[i + 1];
-      const R lb = length(b), lc = length(c);
-      const R num = dot(a, cross(b, c));
-      const R den = la * lb * lc + dot(a, b) * lc + dot(a, c) * lb + dot(b, c) * la;
-      const R t = R(2) * std::atan2(num, den);
-      omega += t;
-      omega_mag += std::fabs(t);
-    }
-    total += std::fabs(omega);
+    R omega_mag = 0;
+    total += std::fabs(fan_solid_angle(poly, view, omega_mag));
     mag += omega_mag;
   }
   constexpr R eps = std::numeric_limits<R>::epsilon();

@@ -97,22 +97,7 @@ inline int area_specular_setup(const PreparedAreaLight<double>& pl, int m, const
     b.c1[i * B + l] = e.c1;
     b.c1p[i * B + l] = e.c1p;
   }
-  if (m % 2 == 0) {
-    const Vec3d a = view.D + poly.d[0];
-    const double la = length(a);
-    double omega = 0, omega_mag = 0;
-    for (int i = 1; i + 1 < count; ++i) {
-      const Vec3d bb = view.D + poly.d[i], c = view.D + poly.d[i + 1];
-      const double lb = length(bb), lc = length(c);
-      const double num = dot(a, cross(bb, c));
-      const double den = la * lb * lc + dot(a, bb) * lc + dot(a, c) * lb + dot(bb, c) * la;
-      const double t = 2. * std::atan2(num, den);
-      omega += t;
-      omega_mag += std::fabs(t);
-    }
-    b.omega[l] = omega;
-    b.omega_mag[l] = omega_mag;
-  }
+  if (m % 2 == 0) b.omega[l] = fan_solid_angle(poly, view, b.omega_mag[l]);
   return count;
 }
 

@@ -2,6 +2,7 @@
 // rule of equal accuracy, one core, one run of this program.
 //
 //   cmake --build build/release --target area_light_bench -j2 && ./build/release/bench/area_light_bench [--quick]
+//   ./build/release/bench/area_light_bench --closed-by-m [--quick]   (the integer-m closed form at fixed m: closed_by_m)
 //
 // Shapes: triangle, quad, regular 8-gon, disk (size 0.3..1.2 at distance 1..3 from P, emitting
 // toward P, N toward the light so the whole light is above the horizon: the quadrature's best case,
@@ -15,7 +16,7 @@
 // The exact rows use the closed form (area_specular_closed.h) where it is within its bound; two
 // more rows time the closed form alone and the adaptive form alone on the same cases.
 // Times: ns per evaluation (per-light preparation excluded, as in the bake loop), best of 3 passes
-// over the cases, each pass repeated until it takes >= 50 ms; single thread.
+// over the cases, each pass repeated until it takes >= 50 ms (2 ms with --quick); single thread.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -185,8 +186,9 @@ double product_rule(const Case& c, const Rule& rule, bool specular) {
 double rel_err(double v, LD ref) { return double(std::fabs(LD(v) - ref) / std::max(std::fabs(ref), LD(1e-300))); }
 
 double g_sink = 0;
+double g_pass_ns = 5e7;  // each timing pass repeats until this long (--quick: 2 ms, a run check only)
 
-// ns per evaluation: best of 3 passes, each repeated until >= 50 ms.
+// ns per evaluation: best of 3 passes, each repeated until >= g_pass_ns.
 double time_ns(const std::vector<Case>& cases, const std::function<double(const Case&)>& f) {
   double best = INFINITY;
   for (int pass = 0; pass < 3; ++pass) {
@@ -197,7 +199,7 @@ double time_ns(const std::vector<Case>& cases, const std::function<double(const 
       for (const Case& c : cases) g_sink += f(c);
       ++reps;
       elapsed = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
-    } while (elapsed < 5e7);
+    } while (elapsed < g_pass_ns);
     best = std::min(best, elapsed / (double(reps) * double(cases.size())));
   }
   return best;
@@ -292,8 +294,10 @@ int closed_by_m(int count) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  if (argc > 1 && std::strcmp(argv[1], "--closed-by-m") == 0) return closed_by_m(128);
+  const bool by_m = argc > 1 && std::strcmp(argv[1], "--closed-by-m") == 0;
+  const bool quick = argc > 1 + by_m && std::strcmp(argv[1 + by_m], "--quick") == 0;
+  if (quick) g_pass_ns = 2e6;
+  if (by_m) return closed_by_m(quick ? 4 : 128);
   const int count = quick ? 4 : 128;
   std::printf("| shape | method | max rel. error | ns/eval | evals/s | speed-up vs matching product rule | product rule |\n");
   std::printf("|---|---|---|---|---|---|---|\n");

@@ -235,9 +235,9 @@ void row(const char* shape, const char* method, double err, double ns, double ba
               baseline_ns > 0 ? ratio(baseline_ns / ns).c_str() : "—", note.c_str());
 }
 
-// --closed-by-m: the integer-m closed form (area_specular_closed.h) alone and `--specular exact`
-// (closed where within its bound, adaptive otherwise) at fixed m on each polygon's cases (m
-// replaced), with how many cases the closed form accepts and its largest difference from the
+// --closed-by-m: the integer-m closed form (area_specular_closed.h) alone, the adaptive form
+// (area_specular_exact.h, tol 1e-9) alone and `--specular exact` (closed where within its bound,
+// adaptive otherwise) at fixed m on each polygon's cases (m replaced), with how many cases the closed form accepts and its largest difference from the
 // adaptive form at tol 1e-13 on those (the closed form's accuracy against the Boost.Math
 // references is tests/kernels/area/area_specular_closed_test.cpp's). Issue 21's scalar bar:
 // <= 500 ns per evaluation for m <= 100.

@@ -487,18 +487,15 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
   }
   for (int k = 1; k < slabs; ++k) prefix[k] += prefix[k - 1];
 
-  // The segments spanning slab k (v0 <= its bottom, v1 >= its top), sorted by u at its middle,
-  // ties by index, into `members`.
-  std::vector<int>& members = s.slab_segments;
-  std::vector<std::pair<double, int>>& keyed = s.sorted;
+  // The segments spanning slab k (v0 <= its bottom, v1 >= its top) with their u at its middle,
+  // sorted by u, ties by index, into `members`.
+  std::vector<std::pair<double, int>>& members = s.slab_segments;
   auto segments_of_slab = [&](int k) {
     const double lo = events[k], hi = events[k + 1], mid = 0.5 * (lo + hi);
-    keyed.clear();
+    members.clear();
     for (std::size_t next = 0; next < order.size() && seg[order[next]].v0 <= lo; ++next)
-      if (seg[order[next]].v1 >= hi) keyed.push_back({u_at(seg[order[next]], mid), order[next]});
-    std::sort(keyed.begin(), keyed.end());
-    members.resize(keyed.size());
-    for (std::size_t i = 0; i < keyed.size(); ++i) members[i] = keyed[i].second;
+      if (seg[order[next]].v1 >= hi) members.push_back({u_at(seg[order[next]], mid), order[next]});
+    std::sort(members.begin(), members.end());
   };
 
   // Reference: t at a point inside L, from one shadow ray; tall slabs and wide trapezoids first
@@ -523,21 +520,20 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     std::vector<std::pair<double, int>>& gaps = s.sorted;  // (width, index of the segment on its left)
     gaps.clear();
     for (int i = 0; i + 1 < n; ++i) {
-      const double a = u_at(seg[members[i]], mid), b = u_at(seg[members[i + 1]], mid);
+      const double a = members[i].first, b = members[i + 1].first;
       if (b > a) gaps.push_back({b - a, i});
     }
     std::sort(gaps.begin(), gaps.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
     for (const auto& [width, i] : gaps) {
       if (rays >= kMaxReferenceRays) break;
-      const double a = u_at(seg[members[i]], mid);
-      const double u = a + 0.5 * width;
+      const double u = members[i].first + 0.5 * width;
       const Vec3d x = f.u * u + f.v * mid;  // relative to the light's centre
       if (winding_number(horizon_clipped, view, x) == 0) continue;
       ++rays;
       const int d = depth_at(f, f.center + x, occluders, s);
       if (d < 0) continue;
       int left = 0;
-      for (int j = 0; j <= i; ++j) left += step[members[j]];
+      for (int j = 0; j <= i; ++j) left += step[members[j].second];
       t0 = d - left - prefix[k];  // t inside L is d; t in the leftmost trapezoid of slab 0
       have_reference = true;
       break;

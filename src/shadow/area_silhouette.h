@@ -89,9 +89,9 @@ struct AreaSilhouetteScratch {
   } active;
   std::vector<int> meets;  // the crossing search's list of held segments that pass its first test
   std::vector<int> order, step, prefix, by_height;
-  std::vector<int> slab_segments;  // the segments spanning the slab of the reference ray, in order of u
+  std::vector<std::pair<double, int>> slab_segments;  // (u, segment) spanning the reference ray's slab, by u
   std::vector<std::pair<double, int>> by_start;  // (v0, segment), for the events and the crossing search
-  std::vector<std::pair<double, int>> sorted;    // a slab's (u, segment); then the reference ray's gaps
+  std::vector<std::pair<double, int>> sorted;    // the reference ray's gaps; then a slab's (u, segment)
   std::vector<std::pair<double, double>> light_uv;
   struct Open { int a, b; double v_start; };  // a trapezoid still growing upward
   std::vector<Open> open, now;

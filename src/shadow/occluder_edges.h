@@ -3,8 +3,8 @@
 // (area_silhouette.h) weighs an edge by the triangles on both of its sides.
 //
 // Build: one record per triangle side keyed by its endpoints in lexicographic order, sorted (on
-// all threads: Boost.Sort's block_indirect_sort), and equal keys merged; O(n log n). Zero-length sides get an edge of their own (they project to a
-// point and never bound anything).
+// all threads: Boost.Sort's block_indirect_sort), and equal keys merged; O(n log n). Zero-length
+// sides get an edge of their own (they project to a point and never bound anything).
 #pragma once
 
 #include <array>

@@ -2,7 +2,8 @@
 // rule of equal accuracy, one core, one run of this program.
 //
 //   cmake --build build/release --target area_light_bench -j2 && ./build/release/bench/area_light_bench [--quick]
-//   ./build/release/bench/area_light_bench --closed-by-m [--quick]   (the integer-m closed form at fixed m: closed_by_m)
+//   ./build/release/bench/area_light_bench --closed-by-m [--tails] [--quick]   (the closed forms at fixed m: closed_by_m;
+//   --tails aims Rv mostly beside the light)
 //
 // Shapes: triangle, quad, regular 8-gon, disk (size 0.3..1.2 at distance 1..3 from P, emitting
 // toward P, N toward the light so the whole light is above the horizon: the quadrature's best case,
@@ -33,6 +34,7 @@
 #include "accuracy_methods.h"
 #include "area_light.h"
 #include "area_specular_closed_real.h"
+#include "area_specular_tail.h"
 #include "disk_light.h"
 
 namespace {
@@ -60,7 +62,9 @@ Vec3d random_unit(std::mt19937_64& rng) {
 // sides: 3, 4, 8, or 0 for a disk.
 // real_m: the same cases with m = 10^(3u) not rounded (glTF roughness gives real m).
 // references = false leaves ref_diffuse and ref_specular 0 (timing only).
-std::vector<Case> make_cases(int sides, int count, bool real_m = false, bool references = true) {
+// rv_spread: how far Rv strays from the direction toward the light's centre (0.3: mostly through
+// the light; 1: mostly beside it, the lobe's tail).
+std::vector<Case> make_cases(int sides, int count, bool real_m = false, bool references = true, double rv_spread = 0.3) {
   std::mt19937_64 rng(1000 + sides);
   std::uniform_real_distribution<double> u01(0, 1);
   std::vector<Case> out;
@@ -75,7 +79,7 @@ std::vector<Case> make_cases(int sides, int count, bool real_m = false, bool ref
     const Vec3d helper = std::abs(normal.x) < 0.6 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
     const Vec3d e1 = normalize(cross(helper, normal)), e2 = cross(normal, e1);
     const Vec3d n = normalize(to_light + random_unit(rng) * 0.3);
-    const Vec3d rv = normalize(to_light + random_unit(rng) * 0.3);
+    const Vec3d rv = normalize(to_light + random_unit(rng) * rv_spread);
     const double m_real = std::pow(10.0, 3 * u01(rng));
     const double m = real_m ? m_real : std::round(m_real);
     c.sp = {p, n, rv, m};
@@ -235,55 +239,90 @@ void row(const char* shape, const char* method, double err, double ns, double ba
               baseline_ns > 0 ? ratio(baseline_ns / ns).c_str() : "—", note.c_str());
 }
 
-// --closed-by-m: the integer-m closed form (area_specular_closed.h) alone, the adaptive form
-// (area_specular_exact.h, tol 1e-9) alone and `--specular exact` (closed where within its bound,
-// adaptive otherwise) at fixed m on each polygon's cases (m replaced), with how many cases the closed form accepts and its largest difference from the
-// adaptive form at tol 1e-13 on those (the closed form's accuracy against the Boost.Math
-// references is tests/kernels/area/area_specular_closed_test.cpp's). Issue 21's scalar bar:
-// <= 500 ns per evaluation for m <= 100.
-int closed_by_m(int count) {
-  std::printf("| shape | m | closed form alone ns/eval | accepted | adaptive alone tol 1e-9 ns/eval | exact tol 1e-9 ns/eval | max rel. diff closed vs adaptive (accepted) |\n");
-  std::printf("|---|---|---|---|---|---|---|\n");
+// --closed-by-m: the integer-m closed form (area_specular_closed.h) alone, the tail closed form
+// (area_specular_tail.h) alone on the cases it accepts (Rv off the light), the adaptive form
+// (area_specular_exact.h, tol 1e-9) alone, and the exact specular's dispatch (area_light.h:
+// closed, else tail, else adaptive) against the same without the tail form (closed, else
+// adaptive), at fixed m on each polygon's cases (m replaced); with how many cases each closed form
+// accepts and its largest difference from the adaptive form at tol 1e-13 (relative tolerance
+// only) on those (their accuracy against the
+// Boost.Math references is tests/kernels/area/area_specular_closed_test.cpp's and
+// area_specular_tail_test.cpp's). Issue 21's scalar bar: <= 500 ns per evaluation for m <= 100,
+// <= 2 us up to m = 1e4.
+int closed_by_m(int count, double rv_spread) {
+  std::printf("| shape | m | closed form alone ns/eval | accepted | tail form alone ns/eval (on its accepted cases) | adaptive alone on those ns/eval | tail accepted | adaptive alone tol 1e-9 ns/eval | exact: closed, else adaptive ns/eval | exact: closed, else tail, else adaptive ns/eval | max rel. diff vs adaptive: closed, tail (accepted) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   const struct { int sides; const char* name; } shapes[] = {{3, "triangle"}, {4, "quad"}, {8, "8-gon"}};
+  struct Visible {
+    AreaView<double> view;
+    ClipPolygon<double> polygon;
+  };
   for (const auto& shape : shapes) {
-    const std::vector<Case> base = make_cases(shape.sides, count, false, false);
+    const std::vector<Case> base = make_cases(shape.sides, count, false, false, rv_spread);
     for (int m : {0, 1, 2, 10, 30, 100, 300, 1000, 3000, 10000}) {
       std::vector<Case> cases = base;
       for (Case& c : cases) c.sp.shininess = m;
-      struct Visible {
-        AreaView<double> view;
-        ClipPolygon<double> polygon;
-      };
       std::vector<Visible> visible(cases.size());
       for (std::size_t i = 0; i < cases.size(); ++i) {
         visible[i].view = make_area_view(cases[i].prepared, cases[i].sp.p);
         if (visible[i].view.lit) clip_to_horizon(cases[i].prepared, visible[i].view, cases[i].sp.n, visible[i].polygon);
       }
-      // The closed form from the horizon-clipped polygon, as the dispatch calls it.
-      const auto closed = [&](const Case& c) {
-        const Visible& v = visible[std::size_t(&c - cases.data())];
-        return area_specular_closed(v.polygon, v.view, c.sp.rv, int(c.sp.shininess)).value;
+      // Each form from the horizon-clipped polygon, as the dispatch calls it.
+      const auto with = [](const std::vector<Case>& of, const std::vector<Visible>& vis, auto form) {
+        return [&of, &vis, form](const Case& c) {
+          const Visible& v = vis[std::size_t(&c - of.data())];
+          return form(v, c);
+        };
       };
-      const auto adaptive = [&](const Case& c) {
-        const Visible& v = visible[std::size_t(&c - cases.data())];
-        return area_specular_exact(v.polygon, v.view, c.sp.rv, c.sp.shininess, 1e-9);
+      const auto closed_form = [m](const Visible& v, const Case& c) {
+        return area_specular_closed(v.polygon, v.view, c.sp.rv, m).value;
       };
-      int accepted = 0;
-      double worst = 0;
+      const auto tail_form = [m](const Visible& v, const Case& c) {
+        return area_specular_tail(v.polygon, v.view, c.sp.rv, double(m)).value;
+      };
+      const auto adaptive_form = [m](const Visible& v, const Case& c) {
+        return area_specular_exact(v.polygon, v.view, c.sp.rv, double(m), 1e-9);
+      };
+      const auto without_tail = [m](const Visible& v, const Case& c) {
+        if (m <= kAreaClosedDispatchMaxShininess) {
+          const AreaSpecularClosed<double> r = area_specular_closed(v.polygon, v.view, c.sp.rv, m);
+          if (r.accepted) return r.value;
+        }
+        return area_specular_exact(v.polygon, v.view, c.sp.rv, double(m), 1e-9);
+      };
+      const auto dispatch = [m](const Visible& v, const Case& c) {  // closed, else tail, else adaptive
+        return area_specular_exact_dispatch(v.polygon, v.view, c.sp.rv, double(m), 1e-9);
+      };
+      int accepted = 0, tail_accepted = 0;
+      double worst = 0, worst_tail = 0;
+      std::vector<Case> tails;
+      std::vector<Visible> tails_visible;
       for (std::size_t i = 0; i < cases.size(); ++i) {
-        const AreaSpecularClosed<double> r =
-            area_specular_closed(visible[i].polygon, visible[i].view, cases[i].sp.rv, m);
-        if (!r.accepted) continue;
-        ++accepted;
-        const double ref = area_specular_exact(visible[i].polygon, visible[i].view, cases[i].sp.rv, double(m), 1e-13);
-        if (ref != 0) worst = std::max(worst, std::fabs(r.value - ref) / std::fabs(ref));
+        const Visible& v = visible[i];
+        // relative tolerance only (bounded_tails = false): the default's absolute target leaves
+        // values ~1e-30 at m = 100 a few digits off, which the tail form resolves
+        const double ref = area_specular_exact(v.polygon, v.view, cases[i].sp.rv, double(m), 1e-13, false);
+        auto diff = [&](double value) { return ref != 0 ? std::fabs(value - ref) / std::fabs(ref) : 0.0; };
+        const AreaSpecularClosed<double> r = area_specular_closed(v.polygon, v.view, cases[i].sp.rv, m);
+        if (r.accepted) {
+          ++accepted;
+          worst = std::max(worst, diff(r.value));
+        }
+        const AreaSpecularTail<double> t = area_specular_tail(v.polygon, v.view, cases[i].sp.rv, double(m));
+        if (t.accepted) {
+          ++tail_accepted;
+          worst_tail = std::max(worst_tail, diff(t.value));
+          tails.push_back(cases[i]);
+          tails_visible.push_back(v);
+        }
       }
-      SpecularOptions o;
-      o.method = SpecularMethod::kExact;
-      o.exact_tolerance = 1e-9;
-      const auto exact = [&](const Case& c) { return shade_area(c.prepared, c.sp, o).specular; };
-      std::printf("| %s | %d | %.0f | %d / %d | %.0f | %.0f | %.1e |\n", shape.name, m, time_ns(cases, closed), accepted,
-                  int(cases.size()), time_ns(cases, adaptive), time_ns(cases, exact), worst);
+      const double tail_ns = tails.empty() ? 0 : time_ns(tails, with(tails, tails_visible, tail_form));
+      const double tails_adaptive_ns = tails.empty() ? 0 : time_ns(tails, with(tails, tails_visible, adaptive_form));
+      std::printf("| %s | %d | %.0f | %d / %d | %.0f | %.0f | %d / %d | %.0f | %.0f | %.0f | %.1e, %.1e |\n", shape.name, m,
+                  time_ns(cases, with(cases, visible, closed_form)), accepted, int(cases.size()), tail_ns, tails_adaptive_ns, tail_accepted,
+                  int(cases.size()), time_ns(cases, with(cases, visible, adaptive_form)),
+                  time_ns(cases, with(cases, visible, without_tail)), time_ns(cases, with(cases, visible, dispatch)),
+                  worst, worst_tail);
       std::fflush(stdout);
     }
   }
@@ -294,10 +333,15 @@ int closed_by_m(int count) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool by_m = argc > 1 && std::strcmp(argv[1], "--closed-by-m") == 0;
-  const bool quick = argc > 1 + by_m && std::strcmp(argv[1 + by_m], "--quick") == 0;
+  bool by_m = false, quick = false, tails = false;
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--closed-by-m") == 0) by_m = true;
+    else if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+    else if (std::strcmp(argv[i], "--tails") == 0) tails = true;
+    else return std::fprintf(stderr, "usage: area_light_bench [--closed-by-m [--tails]] [--quick]\n"), 2;
+  }
   if (quick) g_pass_ns = 2e6;
-  if (by_m) return closed_by_m(quick ? 4 : 128);
+  if (by_m) return closed_by_m(quick ? 4 : 128, tails ? 1.0 : 0.3);
   const int count = quick ? 4 : 128;
   std::printf("| shape | method | max rel. error | ns/eval | evals/s | speed-up vs matching product rule | product rule |\n");
   std::printf("|---|---|---|---|---|---|---|\n");

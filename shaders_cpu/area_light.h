@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "area_diffuse_contour.h"
 #include "area_polygon.h"
@@ -26,21 +27,32 @@
 #include "area_specular_exact.h"
 #include "area_specular_neighborhood.h"
 #include "area_specular_peak.h"
+#include "area_specular_tail.h"
 
 namespace vlit {
 
 // The exact specular: the closed form for integer m <= kAreaClosedDispatchMaxShininess where its
-// rounding bound holds (area_specular_closed.h), the adaptive contour form otherwise
-// (area_specular_exact.h): above that m the closed form's O(m) recurrence is slower than the
-// adaptive form. Real m takes the adaptive form: the real-m closed form
-// (area_specular_closed_real.h) is accurate but did not pay on a real bake (docs/area-lights.md
-// "Real m").
+// rounding bound holds (area_specular_closed.h; above that m its O(m) recurrence is slower than
+// the adaptive form); else, where Rv misses the light, the tail form within its bound and step
+// budget (area_specular_tail.h, integer or real m); else the adaptive contour form
+// (area_specular_exact.h). Tried in that order: where both closed forms accept, the first is
+// the cheaper. The tail form only up to kAreaTailDispatchMaxShininess: above it the adaptive form,
+// which skips the pieces the lobe does not reach, is as fast on the tails
+// (bench/area_light_bench.cpp --closed-by-m --tails). The real-m closed
+// form (area_specular_closed_real.h) is accurate but did not pay on a real bake
+// (docs/area-lights.md "Real m").
 template <class R>
 R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>& view, const Vec3<R>& rv, R m,
                                R tolerance) {
   if (m == std::floor(m) && m >= R(0) && m <= R(kAreaClosedDispatchMaxShininess)) {
     const AreaSpecularClosed<R> c = area_specular_closed(visible, view, rv, int(m));
     if (c.accepted) return c.value;
+  }
+  if (m <= R(kAreaTailDispatchMaxShininess)) {
+    // The adaptive form's absolute target (area_specular_exact.h): tol eps 2 pi / (m + 1).
+    const R floor = tolerance * std::numeric_limits<R>::epsilon() * R(2 * M_PI) / (m + R(1));
+    const AreaSpecularTail<R> t = area_specular_tail(visible, view, rv, m, floor);
+    if (t.accepted) return t.value;
   }
   return area_specular_exact(visible, view, rv, m, tolerance);
 }

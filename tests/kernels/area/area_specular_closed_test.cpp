@@ -31,34 +31,13 @@ Both evaluate(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp, do
   return r;
 }
 
-struct RandomCase {
-  std::vector<Vec3d> poly;
-  ShadingPoint<double> sp;
-};
-
-RandomCase random_case(uint64_t seed, double m_lo, double m_hi) {
-  Rng rng(seed);
-  const double size = rng.log_uniform(1e-2, 1e2);
-  const Vec3d nl = rng.unit();
-  const Vec3d center{0, 0, 0};
-  RandomCase c;
-  c.poly = random_convex_polygon(rng, center, nl, size, rng.log_uniform(0.2, 1), 6);
-  Vec3d dir = rng.unit();
-  if (dot(dir, nl) < 0.1) dir = normalize(dir + nl * (0.2 - dot(dir, nl)));
-  const Vec3d p = center + dir * (size * rng.log_uniform(0.3, 30));
-  const Vec3d n = normalize(center - p + rng.unit() * (size * rng.uniform(0, 2)));
-  const Vec3d rv = normalize(center + rng.unit() * (size * rng.uniform(0, 1.5)) - p);
-  c.sp = {p, n, rv, std::round(rng.log_uniform(m_lo, m_hi))};
-  return c;
-}
-
 }  // namespace
 
 TEST_CASE("closed-form area specular: random configurations vs the area quadrature and the adaptive form") {
   int accepted = 0, total = 0;
   double worst_ref = 0, worst_adaptive = 0, worst_ratio = 0;
   for (uint64_t seed = 1; seed <= 3000; ++seed) {
-    const RandomCase c = random_case(seed, 1, 1e3);
+    const RandomAreaCase c = random_area_case(seed, 1, 1e3);
     const Both b = evaluate(c.poly, c.sp, 1e-13);
     CHECK(std::isfinite(b.closed.value));
     ++total;
@@ -90,7 +69,7 @@ TEST_CASE("closed-form area specular: random configurations with m in [1e3, 1e4]
   int accepted = 0;
   double worst = 0;
   for (uint64_t seed = 7001; seed <= 7400; ++seed) {
-    const RandomCase c = random_case(seed, 1e3, 1e4);
+    const RandomAreaCase c = random_area_case(seed, 1e3, 1e4);
     const Both b = evaluate(c.poly, c.sp, 1e-13);
     CHECK(std::isfinite(b.closed.value));
     if (!b.closed.accepted) continue;
@@ -187,7 +166,7 @@ TEST_CASE("real-m closed form: random configurations vs the area quadrature and 
   int accepted = 0, total = 0;
   double worst_ref = 0, worst_adaptive = 0, worst_ratio = 0;
   for (uint64_t seed = 1; seed <= 3000; ++seed) {
-    RandomCase c = random_case(seed, 1, 1e3);
+    RandomAreaCase c = random_area_case(seed, 1, 1e3);
     Rng rng(seed * 7919);
     c.sp.shininess = rng.log_uniform(1e-2, 1e3);
     const RealBoth b = evaluate_real(c.poly, c.sp, 1e-13);
@@ -219,7 +198,7 @@ TEST_CASE("real-m closed form: random configurations with m in [1e3, 1e4]") {
   int accepted = 0;
   double worst = 0;
   for (uint64_t seed = 7001; seed <= 7400; ++seed) {
-    RandomCase c = random_case(seed, 1e3, 1e4);
+    RandomAreaCase c = random_area_case(seed, 1e3, 1e4);
     c.sp.shininess += 0.37;
     const RealBoth b = evaluate_real(c.poly, c.sp, 1e-13);
     CHECK(std::isfinite(b.closed.value));
@@ -240,7 +219,7 @@ TEST_CASE("real-m closed form: equals the integer closed form at integer m") {
   // integer m: a check of the recurrence's real-k start independent of any quadrature reference.
   int compared = 0;
   for (uint64_t seed = 1; seed <= 500; ++seed) {
-    const RandomCase c = random_case(seed, 1, 1e3);
+    const RandomAreaCase c = random_area_case(seed, 1, 1e3);
     const RealBoth b = evaluate_real(c.poly, c.sp, 1e-6);
     const Both i = evaluate(c.poly, c.sp, 1e-6);
     if (!b.closed.accepted || !i.closed.accepted) continue;

@@ -67,30 +67,6 @@ TailAndAdaptive evaluate(const std::vector<Vec3d>& poly, const ShadingPoint<doub
   return r;
 }
 
-// As area_specular_closed_test.cpp's random cases, with Rv aimed up to 4 sizes from the light's
-// centre, so that it misses the light in most cases.
-struct RandomCase {
-  std::vector<Vec3d> poly;
-  ShadingPoint<double> sp;
-};
-
-RandomCase random_case(uint64_t seed, double m_lo, double m_hi, bool integer) {
-  Rng rng(seed);
-  const double size = rng.log_uniform(1e-2, 1e2);
-  const Vec3d nl = rng.unit();
-  const Vec3d center{0, 0, 0};
-  RandomCase c;
-  c.poly = random_convex_polygon(rng, center, nl, size, rng.log_uniform(0.2, 1), 6);
-  Vec3d dir = rng.unit();
-  if (dot(dir, nl) < 0.1) dir = normalize(dir + nl * (0.2 - dot(dir, nl)));
-  const Vec3d p = center + dir * (size * rng.log_uniform(0.3, 30));
-  const Vec3d n = normalize(center - p + rng.unit() * (size * rng.uniform(0, 2)));
-  const Vec3d rv = normalize(center + rng.unit() * (size * rng.uniform(0, 4)) - p);
-  const double m = rng.log_uniform(m_lo, m_hi);
-  c.sp = {p, n, rv, integer ? std::round(m) : m};
-  return c;
-}
-
 struct Tally {
   int misses = 0, accepted = 0, compared = 0;  // compared: accepted and above the adaptive form's floor
   double worst_ref = 0, worst_adaptive = 0, worst_ratio = 0;
@@ -99,7 +75,8 @@ struct Tally {
 void run_random(uint64_t first, uint64_t last, double m_lo, double m_hi, bool integer, int with_reference, Tally& t,
                 bool relative_only = false) {
   for (uint64_t seed = first; seed <= last; ++seed) {
-    const RandomCase c = random_case(seed, m_lo, m_hi, integer);
+    // Rv aimed up to 4 sizes from the light's centre: it misses the light in most cases.
+    const RandomAreaCase c = random_area_case(seed, m_lo, m_hi, 4, integer);
     const TailAndAdaptive b = evaluate(c.poly, c.sp, 1e-13, relative_only);
     CHECK(std::isfinite(b.tail.value));
     if (b.tail.accepted) CHECK(b.misses);  // never where Rv hits the light

@@ -6,7 +6,8 @@
 //   specular = max over the visible light of max(0, Rv.w)^m                  area_specular_peak.h
 //            | peak x covered fraction of its neighbourhood                  area_specular_neighborhood.h
 //            | ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA       area_specular_closed.h (integer m,
-//              within its bound), else area_specular_exact.h
+//              within its bound), else area_specular_tail.h (Rv beside the light, within its bound),
+//              else area_specular_exact.h
 // Sources: Picott 1992 eq. 9-12 and the sidebar; Nishita and Nakamae 1985; see each file.
 // Conventions: conventions.h. The light is one-sided (emits toward the side from which its
 // vertices are counter-clockwise) unless two_sided; a point behind it, or in its plane, gets 0.

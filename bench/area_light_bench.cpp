@@ -308,7 +308,7 @@ int closed_by_m(int count, double rv_spread) {
           ++accepted;
           worst = std::max(worst, diff(r.value));
         }
-        const AreaSpecularTail<double> t = area_specular_tail(v.polygon, v.view, cases[i].sp.rv, double(m));
+        const AreaSpecularClosed<double> t = area_specular_tail(v.polygon, v.view, cases[i].sp.rv, double(m));
         if (t.accepted) {
           ++tail_accepted;
           worst_tail = std::max(worst_tail, diff(t.value));

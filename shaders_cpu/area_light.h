@@ -52,7 +52,7 @@ R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>&
   if (m <= R(kAreaTailDispatchMaxShininess)) {
     // The adaptive form's absolute target (area_specular_exact.h): tol eps 2 pi / (m + 1).
     const R floor = tolerance * std::numeric_limits<R>::epsilon() * R(2 * M_PI) / (m + R(1));
-    const AreaSpecularTail<R> t = area_specular_tail(visible, view, rv, m, floor);
+    const AreaSpecularClosed<R> t = area_specular_tail(visible, view, rv, m, floor);
     if (t.accepted) return t.value;
   }
   return area_specular_exact(visible, view, rv, m, tolerance);

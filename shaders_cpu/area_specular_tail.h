@@ -183,21 +183,15 @@ EdgeTail<R> tail_upward(R c0, R c0p, R c1, R c1p, R c2, R theta, R s_wn, int mu,
 
 }  // namespace area_tail_detail
 
-template <class R>
-struct AreaSpecularTail {
-  R value{0};
-  R condition{0};
-  bool accepted = false;
-};
-
 // Is(exact) of the horizon-clipped polygon when Rv misses it (see above); accepted = false where
 // it does not apply or its estimate fails. absolute_floor: where a bound of Is lies below it, 0 is
 // returned at once (the adaptive form's absolute target, area_specular_exact.h).
 template <class R>
-AreaSpecularTail<R> area_specular_tail(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& view,
-                                       const Vec3<R>& rv_in, R m, R absolute_floor = R(0)) {
+AreaSpecularClosed<R> area_specular_tail(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& view,
+                                         const Vec3<R>& rv_in, R m, R absolute_floor = R(0)) {
   using namespace area_tail_detail;
-  AreaSpecularTail<R> r;
+  AreaSpecularClosed<R> r;  // the closed forms' result (area_specular_closed.h)
+  r.accepted = false;       // every early return below refuses
   if (!view.lit || horizon_clipped.count < 3 || !(m > R(0))) return r;
   const Vec3<R> rv = normalize(rv_in);
   ClipPolygon<R> poly;

@@ -24,7 +24,7 @@ bool agree(double a, double b, double rel, double m) {
 }
 
 struct TailAndAdaptive {
-  AreaSpecularTail<double> tail;
+  AreaSpecularClosed<double> tail{0, 0, false};  // refused unless evaluate() reaches the form
   double adaptive = 0;
   bool misses = false;  // Rv misses the visible light (after the lobe clip)
   std::vector<std::vector<Vec3d>> pieces;  // the polygon fanned from the lobe's peak on it

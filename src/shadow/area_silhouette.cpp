@@ -7,6 +7,7 @@
 
 #include "core/robust_math.h"
 #include "shadow/silhouette_cluster.h"
+#include "shadow/sweep_axes.h"
 
 namespace vlit {
 namespace {
@@ -266,11 +267,13 @@ double u_at(const SilhouetteSegment& s, double v) {  // s stored with v0 <= v1
 }  // namespace
 
 SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>& light,
-                                                 const AreaView<double>& view,
+                                                 const AreaView<double>& light_view,
                                                  const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
                                                  const OccluderBvh& occluders, AreaSilhouetteScratch& s,
                                                  const SilhouetteCluster* cluster) {
   ++s.queries;
+  // The sweep works in its own axes (sweep_axes.h); the pieces' rectangles are in the light's.
+  const AreaView<double> view = in_sweep_axes(light_view, sweep_axes(light));
   Frame f;
   f.p = p;
   f.center = light.center;
@@ -565,7 +568,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     if (n > 1 && points[n - 1] == points[0]) --n;
     if (n < 3) return;
     if (light_turn < 0) std::reverse(points, points + n);
-    pieces.add(points, n, view.u, view.v);
+    pieces.add(points, n, light_view.u, light_view.v);
   };
   // A slab thinner than this fraction of R (a nearly horizontal segment makes one an ulp high)
   // cannot order its segments: it is left out (its area is below that fraction of R's).

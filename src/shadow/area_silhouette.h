@@ -13,7 +13,8 @@
 // Akenine-Moller, "Soft Shadow Volumes for Ray Tracing", SIGGRAPH 2005, count the same depth
 // from silhouette edges with one shadow ray as reference).
 //  1. The silhouette segments are clipped in 3D to the slab and to the pyramid from P over a
-//     rectangle R slightly larger than the horizon-clipped light L, then projected to (u, v).
+//     rectangle R slightly larger than the horizon-clipped light L, then projected to (u, v), the
+//     sweep's axes (sweep_axes.h: along an edge of the light, so R hugs a rectangular panel).
 //     L's own edges join them with weight -1, so the count t(x) = d(x) + 1 - [x in L] is 0
 //     exactly on the visible part of L.
 //  2. A sweep in v cuts R into slabs at every endpoint and crossing; inside a slab no two

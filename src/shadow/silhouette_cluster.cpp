@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "shadow/area_silhouette.h"
+#include "shadow/sweep_axes.h"
 
 namespace vlit {
 namespace {
@@ -12,8 +13,9 @@ constexpr std::int8_t kVariableFacing = SilhouetteCluster::kVariable;
 // Relative margin of the classification over B: far above the rounding of the per-vertex
 // facing test (is_occluder's kEdgeOn is 1e-12), so a constant class never disagrees with it.
 constexpr double kClassMargin = 1e-9;
-// The widest cluster, relative to the diagonal of the light's rectangle.
-constexpr double kWidestCluster = 1.0;
+// The widest cluster, relative to the light's diameter (2 x its radius, which does not depend on
+// the axes of R): the diagonal of the square around the light's circumscribed circle.
+constexpr double kWidestCluster = 1.4142135623730951;
 // too_wide(): a cluster whose search reaches more than kProbedClusterLeaves leaves per vertex has
 // one vertex's search run to compare with, and is not prepared when it reached more than
 // kWideClusterLeaves times that search's leaves per vertex. Chosen on shadow_bench part 3 (the
@@ -92,7 +94,7 @@ bool too_wide(const PreparedAreaLight<double>& light, const ShadingPoint<double>
     if (d < nearest_distance) nearest = v, nearest_distance = d;
   }
   const Vec3d& p = points[nearest].p;
-  const AreaView<double> view = make_area_view(light, p);
+  const AreaView<double> view = in_sweep_axes(make_area_view(light, p), sweep_axes(light));
   const AreaSlab slab = area_slab(light, view, p);
   const HalfSpace planes[2] = {slab.beyond_light, slab.before_p};
   occluders.silhouette_leaves(area_shadow_volume(light, view, r, p), planes, 2, p, 0, cluster.probe);
@@ -130,7 +132,8 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   }
   if (side == 0) return;  // no vertex is lit: nothing to search
   const Vec3d normal = side > 0 ? light.normal : -light.normal;
-  const Vec3d u = light.u, v = side > 0 ? light.v : -light.v;
+  const SweepAxes axes = sweep_axes(light);  // R in the sweep's axes, as area_silhouette's
+  const Vec3d u = axes.u, v = side > 0 ? axes.v : -axes.v;
   const std::array<Vec3d, 8> corner = corners_of(box);
   for (const Vec3d& q : corner)
     if (!(dot(normal, q - light.center) > 0)) return;  // B reaches the light's plane
@@ -142,7 +145,7 @@ void prepare_silhouette_cluster(const PreparedAreaLight<double>& light, const Sh
   const Rect2 r = silhouette_rectangle(tight, light.radius);
   // A cluster wider than the light sweeps a hull much larger than any of its vertices' pyramids:
   // its lists would hold far more than each vertex needs. Its vertices search alone.
-  if (length(box.hi - box.lo) > kWidestCluster * std::hypot(r.x1 - r.x0, r.y1 - r.y0)) return;
+  if (length(box.hi - box.lo) > kWidestCluster * 2 * light.radius) return;
   const Vec3d rect[4] = {light.center + u * r.x0 + v * r.y0, light.center + u * r.x1 + v * r.y0,
                          light.center + u * r.x1 + v * r.y1, light.center + u * r.x0 + v * r.y1};
   const Vec3d middle = light.center + u * (0.5 * (r.x0 + r.x1)) + v * (0.5 * (r.y0 + r.y1));

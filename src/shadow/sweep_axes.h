@@ -4,12 +4,12 @@
 // The sweep orders the silhouette segments inside the rectangle R around the light, axis-aligned
 // in these axes; every segment inside R is sorted and walked, whether or not it reaches the light.
 // The light's own frame (PreparedAreaLight::u, toward its farthest vertex) runs along a diagonal
-// of a rectangular panel, where R is twice the light and about half of the segments it holds lie
-// beside the light (measured on DamagedHelmet under a square panel: docs/shadows.md, "Sweep axes").
-// Here u runs along the light's edge whose direction gives the light the smallest bounding
-// rectangle (for a convex polygon the smallest of all bounding rectangles has a side on an edge:
-// Freeman and Shapira, "Determining the minimum-area encasing rectangle for an arbitrary closed
-// curve", CACM 1975), and v = normal x u, so u x v = normal as in the light's own frame.
+// of a square panel, where R holds twice the light's area (docs/shadows.md, "The sweep's axes",
+// has the times). Here u runs along the light's edge whose direction gives the light the
+// smallest bounding rectangle (for a convex polygon the smallest of all bounding rectangles has a
+// side on an edge: Freeman and Shapira, "Determining the minimum-area encasing rectangle for an
+// arbitrary closed curve", CACM 1975), and v = normal x u, so u x v = normal as in the light's
+// own frame.
 #pragma once
 
 #include "shadow/area_visibility.h"

@@ -5,8 +5,9 @@
 //   diffuse  = ∫_A max(0, cos theta) cos theta_l / r^2 dA                   area_diffuse_contour.h
 //   specular = max over the visible light of max(0, Rv.w)^m                  area_specular_peak.h
 //            | peak x covered fraction of its neighbourhood                  area_specular_neighborhood.h
-//            | ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA       area_specular_closed.h (integer m,
-//              within its bound), else area_specular_tail.h (Rv beside the light, within its bound),
+//            | ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA       area_specular_cap.h (a narrow
+//              lobe inside the light), else area_specular_closed.h (integer m, within its bound),
+//              else area_specular_tail.h (Rv beside the light, within its bound),
 //              else area_specular_exact.h
 // Sources: Picott 1992 eq. 9-12 and the sidebar; Nishita and Nakamae 1985; see each file.
 // Conventions: conventions.h. The light is one-sided (emits toward the side from which its
@@ -24,6 +25,7 @@
 
 #include "area_diffuse_contour.h"
 #include "area_polygon.h"
+#include "area_specular_cap.h"
 #include "area_specular_closed.h"
 #include "area_specular_exact.h"
 #include "area_specular_neighborhood.h"
@@ -32,7 +34,9 @@
 
 namespace vlit {
 
-// The exact specular: the closed form for integer m <= kAreaClosedDispatchMaxShininess where its
+// The exact specular: above kAreaCapDispatchMinShininess first the narrow lobe's cap where it
+// lies inside the light (area_specular_cap.h: 2 pi / (m + 1), O(n)); then the closed form for
+// integer m <= kAreaClosedDispatchMaxShininess where its
 // rounding bound holds (area_specular_closed.h; above that m its O(m) recurrence is slower than
 // the adaptive form); else, where Rv misses the light, the tail form within its bound and step
 // budget (area_specular_tail.h, integer or real m); else the adaptive contour form
@@ -45,6 +49,10 @@ namespace vlit {
 template <class R>
 R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>& view, const Vec3<R>& rv, R m,
                                R tolerance) {
+  if (m > R(kAreaCapDispatchMinShininess)) {
+    const AreaSpecularClosed<R> cap = area_specular_cap(visible, view, rv, m);
+    if (cap.accepted) return cap.value;
+  }
   if (m == std::floor(m) && m >= R(0) && m <= R(kAreaClosedDispatchMaxShininess)) {
     const AreaSpecularClosed<R> c = area_specular_closed(visible, view, rv, int(m));
     if (c.accepted) return c.value;

@@ -39,25 +39,8 @@ CapAndAdaptive evaluate(const std::vector<Vec3d>& poly, const ShadingPoint<doubl
 
 double full_lobe(double m) { return 2 * M_PI / (m + 1); }
 
-// A seeded random configuration where a narrow lobe can lie inside the light: a convex 3..6-gon
-// of size 1e-2..1e2 (random orientation) at 0.2..2 sizes from P, N toward it within 1.5 sizes,
-// Rv aimed within 0.5 sizes of its centre, m log-uniform in [200, 1e4] (rounded when integer).
-RandomAreaCase near_case(uint64_t seed, bool integer) {
-  Rng rng(seed);
-  const double size = rng.log_uniform(1e-2, 1e2);
-  const Vec3d nl = rng.unit();
-  const Vec3d center{0, 0, 0};
-  RandomAreaCase c;
-  c.poly = random_convex_polygon(rng, center, nl, size, rng.log_uniform(0.2, 1), 6);
-  Vec3d dir = rng.unit();
-  if (dot(dir, nl) < 0.3) dir = normalize(dir + nl * (0.4 - dot(dir, nl)));
-  const Vec3d p = center + dir * (size * rng.log_uniform(0.2, 2));
-  const Vec3d n = normalize(center - p + rng.unit() * (size * rng.uniform(0, 1.5)));
-  const Vec3d rv = normalize(center + rng.unit() * (size * rng.uniform(0, 0.5)) - p);
-  const double m = rng.log_uniform(200, 1e4);
-  c.sp = {p, n, rv, integer ? std::round(m) : m};
-  return c;
-}
+// Where a narrow lobe can lie inside the light: P at 0.2..2 sizes from it, well above its plane.
+constexpr AreaCaseRanges kNear{0.2, 2, 0.3, 1.5};
 
 }  // namespace
 
@@ -68,7 +51,7 @@ TEST_CASE("cap form: random configurations, m in [200, 1e4], vs the area quadrat
   double worst_adaptive = 0, worst_ref = 0, worst_ratio = 0;
   for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
     // Integer and real m alternately.
-    const RandomAreaCase c = near_case(seed, seed % 2 == 0);
+    const RandomAreaCase c = random_area_case(seed, 200, 1e4, 0.5, seed % 2 == 0, kNear);
     const CapAndAdaptive b = evaluate(c.poly, c.sp, false);
     if (!b.lit) continue;
     CHECK(std::isfinite(b.cap.value));

@@ -60,15 +60,19 @@ inline std::vector<Vec3d> random_convex_polygon(Rng& rng, const Vec3d& center, c
 }
 
 // A seeded random configuration of the closed-form tests (area_specular_closed_test.cpp,
-// area_specular_tail_test.cpp): a convex 3..6-gon of size 1e-2..1e2 at 0.3..30 sizes from P, N
-// toward it within 2 sizes, Rv aimed within rv_spread sizes of its centre, m log-uniform in
-// [m_lo, m_hi] (rounded when integer).
+// area_specular_tail_test.cpp, area_specular_cap_test.cpp): a convex 3..6-gon of size 1e-2..1e2
+// at ranges.distance_lo..distance_hi sizes from P (its direction at least ranges.min_facing above
+// the light's plane, in cosine), N toward it within ranges.normal_spread sizes, Rv aimed within
+// rv_spread sizes of its centre, m log-uniform in [m_lo, m_hi] (rounded when integer).
 struct RandomAreaCase {
   std::vector<Vec3d> poly;
   ShadingPoint<double> sp;
 };
+struct AreaCaseRanges {
+  double distance_lo = 0.3, distance_hi = 30, min_facing = 0.1, normal_spread = 2;
+};
 inline RandomAreaCase random_area_case(uint64_t seed, double m_lo, double m_hi, double rv_spread = 1.5,
-                                       bool integer = true) {
+                                       bool integer = true, const AreaCaseRanges& ranges = {}) {
   Rng rng(seed);
   const double size = rng.log_uniform(1e-2, 1e2);
   const Vec3d nl = rng.unit();
@@ -76,9 +80,9 @@ inline RandomAreaCase random_area_case(uint64_t seed, double m_lo, double m_hi, 
   RandomAreaCase c;
   c.poly = random_convex_polygon(rng, center, nl, size, rng.log_uniform(0.2, 1), 6);
   Vec3d dir = rng.unit();
-  if (dot(dir, nl) < 0.1) dir = normalize(dir + nl * (0.2 - dot(dir, nl)));
-  const Vec3d p = center + dir * (size * rng.log_uniform(0.3, 30));
-  const Vec3d n = normalize(center - p + rng.unit() * (size * rng.uniform(0, 2)));
+  if (dot(dir, nl) < ranges.min_facing) dir = normalize(dir + nl * (2 * ranges.min_facing - dot(dir, nl)));
+  const Vec3d p = center + dir * (size * rng.log_uniform(ranges.distance_lo, ranges.distance_hi));
+  const Vec3d n = normalize(center - p + rng.unit() * (size * rng.uniform(0, ranges.normal_spread)));
   const Vec3d rv = normalize(center + rng.unit() * (size * rng.uniform(0, rv_spread)) - p);
   const double m = rng.log_uniform(m_lo, m_hi);
   c.sp = {p, n, rv, integer ? std::round(m) : m};

@@ -99,12 +99,14 @@ TEST_CASE("cap form: named cases, accepted well inside, refused beside an edge, 
   }
   // Rv 2 degrees from an edge (x = 0.25): refused; the lobe really reaches past the edge.
   {
-    const CapAndAdaptive b = evaluate(square_down(0.25, 1), {{0, 0, 0}, up, normalize(Vec3d{std::tan(std::atan(0.25) - 2 * M_PI / 180), 0, 1}), m});
+    const Vec3d rv = normalize(Vec3d{std::tan(std::atan(0.25) - 2 * M_PI / 180), 0, 1});
+    const CapAndAdaptive b = evaluate(square_down(0.25, 1), {{0, 0, 0}, up, rv, m});
     CHECK_FALSE(b.cap.accepted);
     CHECK(full_lobe(m) - b.adaptive > 1e-6 * full_lobe(m));
   }
   // Rv 10 degrees off the light: refused.
-  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, normalize(Vec3d{std::tan(std::atan(0.25) + 10 * M_PI / 180), 0, 1}), m}).cap.accepted);
+  const Vec3d off = normalize(Vec3d{std::tan(std::atan(0.25) + 10 * M_PI / 180), 0, 1});
+  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, off, m}).cap.accepted);
   // The horizon 3 degrees from Rv (N tilted toward +x; the light, half-side 2, reaches 63 degrees
   // from Rv): refused, and the lobe really reaches below the horizon; 6 degrees: accepted.
   for (const double degrees : {3.0, 6.0}) {

@@ -6,6 +6,12 @@
 namespace vlit {
 namespace {
 
+double bounding_area(const PreparedAreaLight<double>& light, const Vec3d& u, const Vec3d& v) {
+  Rect2 r;
+  for (int k = 0; k < light.count; ++k) r.grow(dot(u, light.d[k]), dot(v, light.d[k]));
+  return (r.x1 - r.x0) * (r.y1 - r.y0);
+}
+
 SweepAxes smallest_bounding_rectangle_axes(const PreparedAreaLight<double>& light) {
   SweepAxes best{light.u, light.v};
   double best_area = 0;
@@ -18,11 +24,11 @@ SweepAxes smallest_bounding_rectangle_axes(const PreparedAreaLight<double>& ligh
     if (!(len > 0)) continue;
     const Vec3d u = in_plane / len;
     const Vec3d v = cross(light.normal, u);
-    Rect2 r;
-    for (int k = 0; k < n; ++k) r.grow(dot(u, light.d[k]), dot(v, light.d[k]));
-    const double area = (r.x1 - r.x0) * (r.y1 - r.y0);
+    const double area = bounding_area(light, u, v);
     if (!found || area < best_area) best = {u, v}, best_area = area, found = true;
   }
+  // The light's own frame where it is about as tight (kSweepAxesMinGain).
+  if (!(best_area < (1 - kSweepAxesMinGain) * bounding_area(light, light.u, light.v))) return {light.u, light.v};
   return best;
 }
 

@@ -61,11 +61,14 @@ AreaSpecularClosed<R> area_specular_cap(const ClipPolygon<R>& horizon_clipped, c
     if (!(along * along >= needed * length2)) return r;
     sin2_delta = std::min(sin2_delta, along * along / length2);
   }
-  if (!ray_hits_polygon(horizon_clipped, view, rv)) return r;
-  // Where Rv hits the light's plane, relative to its centre: the winding number must be +-1 (a
-  // polygon that winds twice about Rv would count the cap twice).
-  const Vec3<R> hit = rv * (view.height / -dot(view.normal, rv)) - view.D;
-  if (std::abs(winding_number(horizon_clipped, view, hit)) != 1) return r;
+  // Rv must hit the light's plane inside the polygon, which winds once about the hit point (a
+  // polygon that winds twice about Rv would count the cap twice): ray_hits_polygon's test, with the
+  // winding number's value kept.
+  const R toward = -dot(view.normal, rv);
+  if (!(toward > R(0))) return r;
+  const R t = view.height / toward;
+  if (!std::isfinite(t)) return r;
+  if (std::abs(winding_number(horizon_clipped, view, rv * t - view.D)) != 1) return r;
   // Accepted: every edge at least delta away. The bound (1 - sin^2 delta)^{(m+1)/2} is reported
   // (by log1p for sin^2 delta near 0).
   r.condition = std::exp(R(0.5) * (m + R(1)) * std::log1p(-sin2_delta));

@@ -29,23 +29,34 @@ bool segment_hits_triangle(const Vec3d& a, const Vec3d& b, const std::array<Vec3
 
 namespace {
 
-// Slab test of the segment a + t d, t in [t0, t1], against a box.
-bool segment_meets_box(const Vec3d& a, const Vec3d& d, double t0, double t1, const Aabb& box) {
-  for (int axis = 0; axis < 3; ++axis) {
-    const double o = a[axis], v = d[axis];
-    const double lo = box.lo[axis], hi = box.hi[axis];
-    if (v == 0) {
-      if (o < lo || o > hi) return false;
-      continue;
+// Slab test of the segment a + t d, t in [t0, t1], against boxes: the reciprocals of d are taken
+// once per segment, so a node costs products, not divisions. Their rounding (an ulp or two of t)
+// lies far inside the nodes' padding (padded(), 1e-9 of the scene's scale).
+struct SegmentSlabs {
+  Vec3d a;
+  double inverse[3], t0, t1;
+  bool along[3];  // d has no component on that axis: a's coordinate must lie in the box's range
+  SegmentSlabs(const Vec3d& origin, const Vec3d& d, double t_min, double t_max) : a(origin), t0(t_min), t1(t_max) {
+    for (int axis = 0; axis < 3; ++axis) {
+      along[axis] = d[axis] == 0;
+      inverse[axis] = along[axis] ? 0 : 1 / d[axis];
     }
-    double ta = (lo - o) / v, tb = (hi - o) / v;
-    if (ta > tb) std::swap(ta, tb);
-    t0 = std::max(t0, ta);
-    t1 = std::min(t1, tb);
-    if (t0 > t1) return false;
   }
-  return true;
-}
+  bool meets(const Aabb& box) const {
+    double lo_t = t0, hi_t = t1;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double o = a[axis], lo = box.lo[axis], hi = box.hi[axis];
+      if (along[axis]) {
+        if (o < lo || o > hi) return false;
+        continue;
+      }
+      const double ta = (lo - o) * inverse[axis], tb = (hi - o) * inverse[axis];
+      lo_t = std::max(lo_t, std::min(ta, tb));
+      hi_t = std::min(hi_t, std::max(ta, tb));
+    }
+    return lo_t <= hi_t;
+  }
+};
 
 // Boxes are grown by a relative margin so that rounding in the slab test never drops a
 // triangle the exact per-triangle test would accept.
@@ -442,9 +453,9 @@ bool OccluderBvh::segment_occluded(const Vec3d& a, const Vec3d& b, const Vec3d& 
       if (test(i)) return true;
     return false;
   }
-  const Vec3d d = b - a;
+  const SegmentSlabs slabs(a, b - a, t_min, t_max);
   return descend(
-      nodes_, [&](std::uint32_t self) { return segment_meets_box(a, d, t_min, t_max, nodes_[self].box); },
+      nodes_, [&](std::uint32_t self) { return slabs.meets(nodes_[self].box); },
       [&](std::uint32_t self) {
         const Node& node = nodes_[self];
         for (std::uint32_t i = node.first; i < node.first + node.count; ++i)
@@ -614,9 +625,9 @@ void OccluderBvh::triangles_near_segment(const Vec3d& a, const Vec3d& b, std::ve
     for (std::uint32_t i = 0; i < triangles_.size(); ++i) out.push_back(i);
     return;
   }
-  const Vec3d d = b - a;
+  const SegmentSlabs slabs(a, b - a, 0, 1);
   descend(
-      nodes_, [&](std::uint32_t self) { return segment_meets_box(a, d, 0, 1, nodes_[self].box); },
+      nodes_, [&](std::uint32_t self) { return slabs.meets(nodes_[self].box); },
       [&](std::uint32_t self) {
         for (std::uint32_t i = nodes_[self].first; i < nodes_[self].first + nodes_[self].count; ++i) out.push_back(order_[i]);
         return false;

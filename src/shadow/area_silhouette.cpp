@@ -204,6 +204,12 @@ int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaS
   const Vec3d dir = x - f.p;
   occluders.triangles_near_segment(f.p, x, s.ray_candidates);
   const double plane_tol = kRayAmbiguity * (f.height + (f.rect.x1 - f.rect.x0) + (f.rect.y1 - f.rect.y0));
+  // The slab's plane before P lies kApexMargin h from P, less than plane_tol: with plane_tol there,
+  // a triangle through P (a corner of another mesh a rounding error off P, which `touches` does
+  // not see) was ambiguous for every ray, and the light went to the triangle cuts. Half the apex
+  // margin keeps a hit at P itself clearly outside the slab, and is still far above the rounding
+  // of d1.
+  const double apex_tol = std::min(plane_tol, 0.5 * kApexMargin * f.height);
   int count = 0;
   for (std::uint32_t t : s.ray_candidates) {
     const auto& c = triangles.corners[t];
@@ -230,8 +236,8 @@ int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaS
     if (facing_of(occluders, t, f.p, s) == 0) continue;
     const Vec3d hit = f.p + dir * t_hit;
     const double d0 = f.slab.beyond_light.signed_distance(hit), d1 = f.slab.before_p.signed_distance(hit);
-    if (d0 < -plane_tol || d1 < -plane_tol) continue;
-    if (margin <= kRayAmbiguity || d0 <= plane_tol || d1 <= plane_tol) return -1;
+    if (d0 < -plane_tol || d1 < -apex_tol) continue;
+    if (margin <= kRayAmbiguity || d0 <= plane_tol || d1 <= apex_tol) return -1;
     ++count;
   }
   return count;

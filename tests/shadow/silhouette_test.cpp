@@ -294,7 +294,7 @@ TEST_CASE("silhouettes = triangle cuts on the paper's bowling lane (assets/paper
   MESSAGE("bowling lane: " << agree.shadowed << " of " << agree.cases << " shadowed; diffuse " << agree.diffuse);
   // The silhouettes decide (without the triangle cuts) at every vertex but the two copies of one
   // pin-top vertex on a seam, under one panel (a slab's count goes below 0 there). The vertices on
-  // the pins' seams, whose copies lie 1e-17 apart (the previous test), went to the triangle cuts.
+  // the pins' seams, whose copies lie 1e-17 apart (the next test), went to the triangle cuts.
   AreaSilhouetteScratch scratch;
   for (const LightSource& source : scene.lights) {
     const PreparedLight<double> prepared = prepare_light<double>(source);
@@ -321,8 +321,8 @@ TEST_CASE("silhouettes: a triangle whose corner lies a rounding error off P leav
   // z = r sin(pi)): the other copy's triangles then pass through P without touching it exactly,
   // and every shadow ray from P meets one of them at P itself, outside the slab (kApexMargin h
   // from P). Such a hit is not counted and not ambiguous: the silhouette path decides, and agrees
-  // with the triangle cuts (which clip the triangle to the slab). The bowling lane has 68 such
-  // vertex x light pairs (the next test).
+  // with the triangle cuts (which clip the triangle to the slab). The bowling lane had 68 such
+  // vertex x light pairs (the previous test).
   const Vec3d p{0.1, 0.05, -1e-17};
   const Vec3d corner{0.1, 0.05, 0};
   // Rising from P (not toward the light: it hides nothing), so that every ray from P crosses its
@@ -331,8 +331,8 @@ TEST_CASE("silhouettes: a triangle whose corner lies a rounding error off P leav
   const PreparedLight<double> panel = prepare_light<double>(area_source(square_light(0.5, 2)));
   const ShadingPoint<double> sp = make_shading_point(p, Vec3d{0, 0, 1}, Vec3d{0, 0, 4}, 8.0);
   for (const bool plate : {false, true}) {
-    // With a plate hiding the light's half x > 0 the sweep runs, and its reference ray must be
-    // decided too.
+    // With a plate at half the light's height hiding the light beyond x = -0.1 from P, the sweep
+    // runs, and its reference ray must be decided too.
     if (plate) add_quad(tris, Vec3d{0, -1, 1}, Vec3d{0, 2, 0}, Vec3d{1, 0, 0});
     const OccluderBvh bvh = make_bvh(tris);
     CAPTURE(plate);

@@ -47,21 +47,26 @@ void compare(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
   ++out.cases;
 }
 
-// How often the silhouette path decided by itself at these points (1 = always).
-double decided_fraction(const PreparedAreaLight<double>& light, const std::vector<ShadingPoint<double>>& points,
-                        const OccluderBvh& bvh) {
-  AreaSilhouetteScratch scratch;
-  int asked = 0, decided = 0;
+// Asks the silhouette path at each point the light reaches; `scratch` counts the queries and
+// those it left undecided (for the triangle cuts).
+void ask_silhouettes(const PreparedAreaLight<double>& light, const std::vector<ShadingPoint<double>>& points,
+                     const OccluderBvh& bvh, AreaSilhouetteScratch& scratch) {
   for (const ShadingPoint<double>& sp : points) {
     const AreaView<double> view = make_area_view(light, sp.p);
     if (!view.lit) continue;
     ClipPolygon<double> horizon;
     clip_to_horizon(light, view, sp.n, horizon);
     if (horizon.count < 3) continue;
-    ++asked;
-    decided += visible_area_by_silhouettes(light, view, horizon, sp.p, bvh, scratch) != SilhouetteVisibility::kUndecided;
+    visible_area_by_silhouettes(light, view, horizon, sp.p, bvh, scratch);
   }
-  return asked ? static_cast<double>(decided) / asked : 1.0;
+}
+
+// How often the silhouette path decided by itself at these points (1 = always).
+double decided_fraction(const PreparedAreaLight<double>& light, const std::vector<ShadingPoint<double>>& points,
+                        const OccluderBvh& bvh) {
+  AreaSilhouetteScratch scratch;
+  ask_silhouettes(light, points, bvh, scratch);
+  return scratch.queries ? 1 - static_cast<double>(scratch.undecided) / scratch.queries : 1.0;
 }
 
 const PreparedAreaLight<double>& area_of(const PreparedLight<double>& l) {
@@ -297,16 +302,13 @@ TEST_CASE("silhouettes = triangle cuts on the paper's bowling lane (assets/paper
   // the pins' seams, whose copies lie 1e-17 apart (the next test), went to the triangle cuts.
   AreaSilhouetteScratch scratch;
   for (const LightSource& source : scene.lights) {
-    const PreparedLight<double> prepared = prepare_light<double>(source);
-    const PreparedAreaLight<double>& light = area_of(prepared);
-    for (const ScenePrimitive& prim : scene.primitives)
-      for (std::size_t v = 0; v < prim.positions.size(); ++v) {
-        const ShadingPoint<double> sp = make_shading_point(prim.positions[v], prim.normals[v], Vec3d{0, 1, 5}, 10.0);
-        const AreaView<double> view = make_area_view(light, sp.p);
-        ClipPolygon<double> horizon;
-        if (view.lit) clip_to_horizon(light, view, sp.n, horizon);
-        if (horizon.count >= 3) visible_area_by_silhouettes(light, view, horizon, sp.p, bvh, scratch);
-      }
+    const PreparedLight<double> light = prepare_light<double>(source);
+    for (const ScenePrimitive& prim : scene.primitives) {
+      std::vector<ShadingPoint<double>> points;
+      for (std::size_t v = 0; v < prim.positions.size(); ++v)
+        points.push_back(make_shading_point(prim.positions[v], prim.normals[v], Vec3d{0, 1, 5}, 10.0));
+      ask_silhouettes(area_of(light), points, bvh, scratch);
+    }
   }
   MESSAGE("bowling lane: " << scratch.undecided << " of " << scratch.queries << " silhouette queries undecided");
   CHECK(scratch.queries > 60000);

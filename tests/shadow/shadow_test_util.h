@@ -35,6 +35,14 @@ inline ScenePrimitive primitive_of(const std::vector<Tri>& tris) {
   return prim;
 }
 
+// The primitive's vertices as shading points (their own normals), seen from `eye` with shininess m.
+inline std::vector<ShadingPoint<double>> vertex_points(const ScenePrimitive& prim, const Vec3d& eye, double m) {
+  std::vector<ShadingPoint<double>> points;
+  for (std::size_t v = 0; v < prim.positions.size(); ++v)
+    points.push_back(make_shading_point(prim.positions[v], prim.normals[v], eye, m));
+  return points;
+}
+
 // Two triangles covering the rectangle corner + s e1 + t e2, s, t in [0, 1].
 inline void add_quad(std::vector<Tri>& tris, const Vec3d& corner, const Vec3d& e1, const Vec3d& e2) {
   tris.push_back({corner, corner + e1, corner + e1 + e2});

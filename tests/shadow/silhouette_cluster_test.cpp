@@ -103,9 +103,7 @@ TEST_CASE("clusters = one search per vertex: the paper's bowling lane, every ver
   for (const LightSource& source : scene.lights) {
     const PreparedLight<double> light = prepare_light<double>(source);
     for (const ScenePrimitive& prim : scene.primitives) {
-      std::vector<ShadingPoint<double>> points;
-      for (std::size_t v = 0; v < prim.positions.size(); ++v)
-        points.push_back(make_shading_point(prim.positions[v], prim.normals[v], Vec3d{0, 1, 5}, 10.0));
+      const std::vector<ShadingPoint<double>> points = vertex_points(prim, Vec3d{0, 1, 5}, 10.0);
       const ClusterAgreement a = compare_clusters(light, points, bvh, SpecularMethod::kNone, 97);
       all.diffuse = std::max(all.diffuse, a.diffuse);
       all.cuts = std::max(all.cuts, a.cuts);

@@ -304,9 +304,7 @@ TEST_CASE("silhouettes = triangle cuts on the paper's bowling lane (assets/paper
   for (const LightSource& source : scene.lights) {
     const PreparedLight<double> light = prepare_light<double>(source);
     for (const ScenePrimitive& prim : scene.primitives) {
-      std::vector<ShadingPoint<double>> points;
-      for (std::size_t v = 0; v < prim.positions.size(); ++v)
-        points.push_back(make_shading_point(prim.positions[v], prim.normals[v], Vec3d{0, 1, 5}, 10.0));
+      const std::vector<ShadingPoint<double>> points = vertex_points(prim, Vec3d{0, 1, 5}, 10.0);
       ask_silhouettes(area_of(light), points, bvh, scratch);
     }
   }

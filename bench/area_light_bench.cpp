@@ -242,16 +242,17 @@ void row(const char* shape, const char* method, double err, double ns, double ba
 // --closed-by-m: the integer-m closed form (area_specular_closed.h) alone, the tail closed form
 // (area_specular_tail.h) alone on the cases it accepts (Rv off the light), the adaptive form
 // (area_specular_exact.h, tol 1e-9) alone, and the exact specular's dispatch (area_light.h: the
-// narrow lobe's cap above kAreaCapDispatchMinShininess, closed, tail, else adaptive) against
-// closed, else adaptive, at fixed m on each polygon's cases (m replaced); with how many cases each closed form
+// narrow lobe's cap above kAreaCapDispatchMinShininess, the edge lobe above
+// kAreaEdgeLobeDispatchMinShininess, closed, tail, else adaptive) against closed, else adaptive,
+// and against the dispatch without the edge lobe, at fixed m on each polygon's cases (m replaced); with how many cases each closed form
 // accepts and its largest difference from the adaptive form at tol 1e-13 (relative tolerance
 // only) on those (their accuracy against the
 // Boost.Math references is tests/kernels/area/area_specular_closed_test.cpp's and
 // area_specular_tail_test.cpp's). Issue 21's scalar bar: <= 500 ns per evaluation for m <= 100,
 // <= 2 us up to m = 1e4.
 int closed_by_m(int count, double rv_spread) {
-  std::printf("| shape | m | closed form alone ns/eval | accepted | tail form alone ns/eval (on its accepted cases) | adaptive alone on those ns/eval | tail accepted | adaptive alone tol 1e-9 ns/eval | exact: closed, else adaptive ns/eval | exact: the dispatch (cap, closed, tail, adaptive) ns/eval | max rel. diff vs adaptive: closed, tail (accepted) | cap accepted (dispatched above m = %g) |\n", kAreaCapDispatchMinShininess);
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| shape | m | closed form alone ns/eval | accepted | tail form alone ns/eval (on its accepted cases) | adaptive alone on those ns/eval | tail accepted | adaptive alone tol 1e-9 ns/eval | exact: closed, else adaptive ns/eval | exact: the dispatch without the edge lobe (cap, closed, tail, adaptive) ns/eval | exact: the dispatch (cap, edge lobe, closed, tail, adaptive) ns/eval | max rel. diff vs adaptive: closed, tail (accepted) | cap accepted (dispatched above m = %g) | edge lobe accepted where the cap refuses (dispatched above m = %g) |\n", kAreaCapDispatchMinShininess, kAreaEdgeLobeDispatchMinShininess);
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   const struct { int sides; const char* name; } shapes[] = {{3, "triangle"}, {4, "quad"}, {8, "8-gon"}};
   struct Visible {
     AreaView<double> view;
@@ -290,10 +291,26 @@ int closed_by_m(int count, double rv_spread) {
         }
         return area_specular_exact(v.polygon, v.view, c.sp.rv, double(m), 1e-9);
       };
-      const auto dispatch = [m](const Visible& v, const Case& c) {  // closed, else tail, else adaptive
+      const auto dispatch = [m](const Visible& v, const Case& c) {  // cap, edge lobe, closed, tail, adaptive
         return area_specular_exact_dispatch(v.polygon, v.view, c.sp.rv, double(m), 1e-9);
       };
-      int accepted = 0, tail_accepted = 0, cap_accepted = 0;
+      const auto without_edge_lobe = [m](const Visible& v, const Case& c) {  // the dispatch before the edge lobe
+        if (m > kAreaCapDispatchMinShininess) {
+          const AreaSpecularClosed<double> r = area_specular_cap(v.polygon, v.view, c.sp.rv, double(m));
+          if (r.accepted) return r.value;
+        }
+        if (m <= kAreaClosedDispatchMaxShininess) {
+          const AreaSpecularClosed<double> r = area_specular_closed(v.polygon, v.view, c.sp.rv, m);
+          if (r.accepted) return r.value;
+        }
+        if (m <= kAreaTailDispatchMaxShininess) {
+          const double floor = 1e-9 * std::numeric_limits<double>::epsilon() * 2 * M_PI / (m + 1);
+          const AreaSpecularClosed<double> r = area_specular_tail(v.polygon, v.view, c.sp.rv, double(m), floor);
+          if (r.accepted) return r.value;
+        }
+        return area_specular_exact(v.polygon, v.view, c.sp.rv, double(m), 1e-9);
+      };
+      int accepted = 0, tail_accepted = 0, cap_accepted = 0, edge_accepted = 0;
       double worst = 0, worst_tail = 0;
       std::vector<Case> tails;
       std::vector<Visible> tails_visible;
@@ -308,7 +325,10 @@ int closed_by_m(int count, double rv_spread) {
           ++accepted;
           worst = std::max(worst, diff(r.value));
         }
-        cap_accepted += area_specular_cap(v.polygon, v.view, cases[i].sp.rv, double(m)).accepted;
+        const bool cap = area_specular_cap(v.polygon, v.view, cases[i].sp.rv, double(m)).accepted;
+        cap_accepted += cap;
+        // the edge lobe where the dispatch would reach it (the cap refused)
+        edge_accepted += !cap && area_specular_edge_lobe(v.polygon, v.view, cases[i].sp.rv, double(m)).accepted;
         const AreaSpecularClosed<double> t = area_specular_tail(v.polygon, v.view, cases[i].sp.rv, double(m));
         if (t.accepted) {
           ++tail_accepted;
@@ -319,11 +339,12 @@ int closed_by_m(int count, double rv_spread) {
       }
       const double tail_ns = tails.empty() ? 0 : time_ns(tails, with(tails, tails_visible, tail_form));
       const double tails_adaptive_ns = tails.empty() ? 0 : time_ns(tails, with(tails, tails_visible, adaptive_form));
-      std::printf("| %s | %d | %.0f | %d / %d | %.0f | %.0f | %d / %d | %.0f | %.0f | %.0f | %.1e, %.1e | %d / %d |\n", shape.name, m,
+      std::printf("| %s | %d | %.0f | %d / %d | %.0f | %.0f | %d / %d | %.0f | %.0f | %.0f | %.0f | %.1e, %.1e | %d / %d | %d / %d |\n", shape.name, m,
                   time_ns(cases, with(cases, visible, closed_form)), accepted, int(cases.size()), tail_ns, tails_adaptive_ns, tail_accepted,
                   int(cases.size()), time_ns(cases, with(cases, visible, adaptive_form)),
-                  time_ns(cases, with(cases, visible, without_tail)), time_ns(cases, with(cases, visible, dispatch)),
-                  worst, worst_tail, cap_accepted, int(cases.size()));
+                  time_ns(cases, with(cases, visible, without_tail)), time_ns(cases, with(cases, visible, without_edge_lobe)),
+                  time_ns(cases, with(cases, visible, dispatch)), worst, worst_tail, cap_accepted, int(cases.size()),
+                  edge_accepted, int(cases.size()));
       std::fflush(stdout);
     }
   }

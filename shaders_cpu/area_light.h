@@ -26,6 +26,7 @@
 #include "area_diffuse_contour.h"
 #include "area_polygon.h"
 #include "area_specular_cap.h"
+#include "area_specular_edge_lobe.h"
 #include "area_specular_closed.h"
 #include "area_specular_exact.h"
 #include "area_specular_neighborhood.h"
@@ -52,6 +53,10 @@ R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>&
   if (m > R(kAreaCapDispatchMinShininess)) {
     const AreaSpecularClosed<R> cap = area_specular_cap(visible, view, rv, m);
     if (cap.accepted) return cap.value;
+  }
+  if (m > R(kAreaEdgeLobeDispatchMinShininess)) {
+    const AreaSpecularClosed<R> cut = area_specular_edge_lobe(visible, view, rv, m);
+    if (cut.accepted) return cut.value;
   }
   if (m == std::floor(m) && m >= R(0) && m <= R(kAreaClosedDispatchMaxShininess)) {
     const AreaSpecularClosed<R> c = area_specular_closed(visible, view, rv, int(m));

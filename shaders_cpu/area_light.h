@@ -6,7 +6,8 @@
 //   specular = max over the visible light of max(0, Rv.w)^m                  area_specular_peak.h
 //            | peak x covered fraction of its neighbourhood                  area_specular_neighborhood.h
 //            | ∫_A [cos theta > 0] max(0, Rv.w)^m cos theta_l / r^2 dA       area_specular_cap.h (a narrow
-//              lobe inside the light), else area_specular_closed.h (integer m, within its bound),
+//              lobe inside the light), else area_specular_edge_lobe.h (a narrow lobe that one edge
+//              cuts), else area_specular_closed.h (integer m, within its bound),
 //              else area_specular_tail.h (Rv beside the light, within its bound),
 //              else area_specular_exact.h
 // Sources: Picott 1992 eq. 9-12 and the sidebar; Nishita and Nakamae 1985; see each file.
@@ -36,7 +37,9 @@
 namespace vlit {
 
 // The exact specular: above kAreaCapDispatchMinShininess first the narrow lobe's cap where it
-// lies inside the light (area_specular_cap.h: 2 pi / (m + 1), O(n)); then the closed form for
+// lies inside the light (area_specular_cap.h: 2 pi / (m + 1), O(n)); above
+// kAreaEdgeLobeDispatchMinShininess the narrow lobe that a single edge cuts
+// (area_specular_edge_lobe.h: an incomplete beta function, O(n)); then the closed form for
 // integer m <= kAreaClosedDispatchMaxShininess where its
 // rounding bound holds (area_specular_closed.h; above that m its O(m) recurrence is slower than
 // the adaptive form); else, where Rv misses the light, the tail form within its bound and step

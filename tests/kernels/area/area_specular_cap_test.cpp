@@ -14,27 +14,11 @@ using namespace vlit::test;
 
 namespace {
 
-struct CapAndAdaptive {
-  AreaSpecularClosed<double> cap{0, 0, false};
-  double adaptive = 0;
-  bool lit = false;
-};
-
-// The adaptive form at tolerance 1e-13, relative only (bounded_tails = false), as the comparison.
-// compare_refused: also the adaptive form where the cap form refuses.
-CapAndAdaptive evaluate(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp, bool compare_refused = true) {
-  const PreparedAreaLight<double> pl = prepare_area_light(light_of(poly));
-  const AreaView<double> view = make_area_view(pl, sp.p);
-  CapAndAdaptive r;
-  if (!view.lit) return r;
-  ClipPolygon<double> visible;
-  clip_to_horizon(pl, view, sp.n, visible);
-  if (visible.count < 3) return r;
-  r.lit = true;
-  r.cap = area_specular_cap(visible, view, sp.rv, sp.shininess);
-  if (r.cap.accepted || compare_refused)
-    r.adaptive = area_specular_exact(visible, view, sp.rv, sp.shininess, 1e-13, false);
-  return r;
+// The cap form beside the adaptive form (area_test_util.h).
+FormAndAdaptive evaluate(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp, bool compare_refused = true) {
+  return form_and_adaptive(
+      poly, sp, [](const auto& visible, const auto& view, const auto& rv, double m) { return area_specular_cap(visible, view, rv, m); },
+      compare_refused);
 }
 
 double full_lobe(double m) { return 2 * M_PI / (m + 1); }
@@ -52,19 +36,19 @@ TEST_CASE("cap form: random configurations, m in [200, 1e4], vs the area quadrat
   for (uint64_t seed = 1; seed <= kSeeds; ++seed) {
     // Integer and real m alternately.
     const RandomAreaCase c = random_area_case(seed, 200, 1e4, 0.5, seed % 2 == 0, kNear);
-    const CapAndAdaptive b = evaluate(c.poly, c.sp, false);
+    const FormAndAdaptive b = evaluate(c.poly, c.sp, false);
     if (!b.lit) continue;
-    CHECK(std::isfinite(b.cap.value));
-    if (!b.cap.accepted) continue;
+    CHECK(std::isfinite(b.form.value));
+    if (!b.form.accepted) continue;
     ++accepted;
     INFO("seed=", seed, " ", describe(c.poly, c.sp));
-    INFO("cap=", b.cap.value, " adaptive=", b.adaptive, " bound=", b.cap.condition);
-    CHECK(b.cap.value == full_lobe(c.sp.shininess));
+    INFO("cap=", b.form.value, " adaptive=", b.adaptive, " bound=", b.form.condition);
+    CHECK(b.form.value == full_lobe(c.sp.shininess));
     // The cap's value is never below Is, and above it by at most the bound (plus the adaptive
     // form's own 1e-13).
-    const double vs_adaptive = (b.cap.value - b.adaptive) / b.adaptive;
+    const double vs_adaptive = (b.form.value - b.adaptive) / b.adaptive;
     CHECK(vs_adaptive >= -1e-13);
-    CHECK(vs_adaptive <= b.cap.condition + 1e-13);
+    CHECK(vs_adaptive <= b.form.condition + 1e-13);
     CHECK(vs_adaptive <= kAreaClosedBound);
     worst_adaptive = std::max(worst_adaptive, std::abs(vs_adaptive));
     // The area quadrature resolves lobes up to m ~ 1e3 in reasonable time (it splits its polar
@@ -72,12 +56,12 @@ TEST_CASE("cap form: random configurations, m in [200, 1e4], vs the area quadrat
     if (referenced < kReferenced && c.sp.shininess <= 1000) {
       ++referenced;
       const double ref = reference_specular({c.poly}, c.sp, false, 1e-13L);
-      const double err = (b.cap.value - ref) / ref;
+      const double err = (b.form.value - ref) / ref;
       INFO("reference=", ref, " rel.err=", err);
-      CHECK(std::abs(err) <= std::max(b.cap.condition, 0.0) + 1e-12);
+      CHECK(std::abs(err) <= std::max(b.form.condition, 0.0) + 1e-12);
       CHECK(std::abs(err) <= kAreaClosedBound);
       worst_ref = std::max(worst_ref, std::abs(err));
-      if (b.cap.condition > 1e-13) worst_ratio = std::max(worst_ratio, std::abs(err) / b.cap.condition);
+      if (b.form.condition > 1e-13) worst_ratio = std::max(worst_ratio, std::abs(err) / b.form.condition);
     }
   }
   MESSAGE("cap form: ", accepted, " of ", kSeeds, " accepted; max rel. difference ", worst_adaptive,
@@ -92,33 +76,33 @@ TEST_CASE("cap form: named cases, accepted well inside, refused beside an edge, 
   const double m = 1e4;  // the cap needs about 4.1 degrees from every edge
   // A square of half-side 0.25 at height 1: its edges 14 degrees from Rv = up.
   {
-    const CapAndAdaptive b = evaluate(square_down(0.25, 1), {{0, 0, 0}, up, up, m});
-    REQUIRE(b.cap.accepted);
-    CHECK(b.cap.value == full_lobe(m));
-    CHECK(std::abs(b.cap.value - b.adaptive) <= 1e-13 * b.adaptive);
+    const FormAndAdaptive b = evaluate(square_down(0.25, 1), {{0, 0, 0}, up, up, m});
+    REQUIRE(b.form.accepted);
+    CHECK(b.form.value == full_lobe(m));
+    CHECK(std::abs(b.form.value - b.adaptive) <= 1e-13 * b.adaptive);
   }
   // Rv 2 degrees from an edge (x = 0.25): refused; the lobe really reaches past the edge.
   {
     const Vec3d rv = normalize(Vec3d{std::tan(std::atan(0.25) - 2 * M_PI / 180), 0, 1});
-    const CapAndAdaptive b = evaluate(square_down(0.25, 1), {{0, 0, 0}, up, rv, m});
-    CHECK_FALSE(b.cap.accepted);
+    const FormAndAdaptive b = evaluate(square_down(0.25, 1), {{0, 0, 0}, up, rv, m});
+    CHECK_FALSE(b.form.accepted);
     CHECK(full_lobe(m) - b.adaptive > 1e-6 * full_lobe(m));
   }
   // Rv 10 degrees off the light: refused.
   const Vec3d off = normalize(Vec3d{std::tan(std::atan(0.25) + 10 * M_PI / 180), 0, 1});
-  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, off, m}).cap.accepted);
+  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, off, m}).form.accepted);
   // The horizon 3 degrees from Rv (N tilted toward +x; the light, half-side 2, reaches 63 degrees
   // from Rv): refused, and the lobe really reaches below the horizon; 6 degrees: accepted.
   for (const double degrees : {3.0, 6.0}) {
     const double t = degrees * M_PI / 180;
-    const CapAndAdaptive b = evaluate(square_down(2, 1), {{0, 0, 0}, Vec3d{std::cos(t), 0, std::sin(t)}, up, m});
-    INFO("horizon ", degrees, " degrees from Rv: adaptive ", b.adaptive, " bound ", b.cap.condition);
+    const FormAndAdaptive b = evaluate(square_down(2, 1), {{0, 0, 0}, Vec3d{std::cos(t), 0, std::sin(t)}, up, m});
+    INFO("horizon ", degrees, " degrees from Rv: adaptive ", b.adaptive, " bound ", b.form.condition);
     if (degrees < 4) {
-      CHECK_FALSE(b.cap.accepted);
+      CHECK_FALSE(b.form.accepted);
       CHECK(full_lobe(m) - b.adaptive > 1e-8 * full_lobe(m));  // the half-space beyond 5.2 lobe widths: ~8e-8
     } else {
-      CHECK(b.cap.accepted);
-      CHECK(std::abs(b.cap.value - b.adaptive) <= kAreaClosedBound * b.adaptive);
+      CHECK(b.form.accepted);
+      CHECK(std::abs(b.form.value - b.adaptive) <= kAreaClosedBound * b.adaptive);
     }
   }
   // A pentagram (a self-overlapping light) winds twice about its centre: refused there, where the
@@ -129,14 +113,14 @@ TEST_CASE("cap form: named cases, accepted well inside, refused beside an edge, 
       const double a = 2 * M_PI * (2 * k) / 5;
       star.push_back({0.5 * std::cos(a), -0.5 * std::sin(a), 1});  // clockwise from above: emits down
     }
-    const CapAndAdaptive b = evaluate(star, {{0, 0, 0}, up, up, m});
+    const FormAndAdaptive b = evaluate(star, {{0, 0, 0}, up, up, m});
     INFO("pentagram: adaptive ", b.adaptive, " = ", b.adaptive / full_lobe(m), " full lobes");
-    CHECK_FALSE(b.cap.accepted);
+    CHECK_FALSE(b.form.accepted);
     CHECK(std::abs(b.adaptive - 2 * full_lobe(m)) <= 1e-12 * b.adaptive);
   }
   // m = 0 and m = 100: never (the cap would need the whole hemisphere, or 41 degrees).
-  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, up, 0}).cap.accepted);
-  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, up, 100}).cap.accepted);
+  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, up, 0}).form.accepted);
+  CHECK_FALSE(evaluate(square_down(0.25, 1), {{0, 0, 0}, up, up, 100}).form.accepted);
 }
 
 TEST_CASE("cap form: --specular exact takes it above kAreaCapDispatchMinShininess, real and integer m") {
@@ -145,9 +129,9 @@ TEST_CASE("cap form: --specular exact takes it above kAreaCapDispatchMinShinines
   for (const double m : {500.0, 1000.0, 2345.6, 1e4}) {
     const ShadingPoint<double> sp{{0, 0, 0}, up, normalize(Vec3d{0.02, -0.03, 1}), m};
     const double e = shade_area(light_of(poly), sp, spec_options(SpecularMethod::kExact, 1e-9)).specular;
-    const CapAndAdaptive b = evaluate(poly, sp);
+    const FormAndAdaptive b = evaluate(poly, sp);
     INFO("m=", m, " exact=", e, " adaptive=", b.adaptive);
-    REQUIRE(b.cap.accepted);
+    REQUIRE(b.form.accepted);
     CHECK(e == full_lobe(m));
     CHECK(std::abs(e - b.adaptive) <= kAreaClosedBound * b.adaptive);
   }

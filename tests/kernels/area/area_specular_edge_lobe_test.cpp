@@ -15,25 +15,12 @@ using namespace vlit::test;
 
 namespace {
 
-struct EdgeLobeAndAdaptive {
-  AreaSpecularClosed<double> form{0, 0, false};
-  double adaptive = 0;
-  bool lit = false;
-};
-
-// The adaptive form at tolerance 1e-13, relative only (bounded_tails = false), as the comparison.
-EdgeLobeAndAdaptive evaluate(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp, bool two_sided = false) {
-  const PreparedAreaLight<double> pl = prepare_area_light(light_of(poly, two_sided));
-  const AreaView<double> view = make_area_view(pl, sp.p);
-  EdgeLobeAndAdaptive r;
-  if (!view.lit) return r;
-  ClipPolygon<double> visible;
-  clip_to_horizon(pl, view, sp.n, visible);
-  if (visible.count < 3) return r;
-  r.lit = true;
-  r.form = area_specular_edge_lobe(visible, view, sp.rv, sp.shininess);
-  r.adaptive = area_specular_exact(visible, view, sp.rv, sp.shininess, 1e-13, false);
-  return r;
+// The edge-lobe form beside the adaptive form (area_test_util.h).
+FormAndAdaptive evaluate(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp, bool two_sided = false) {
+  return form_and_adaptive(
+      poly, sp,
+      [](const auto& visible, const auto& view, const auto& rv, double m) { return area_specular_edge_lobe(visible, view, rv, m); },
+      true, two_sided);
 }
 
 // Rv turned from the direction of a point of edge k (at parameter t) by the angle gamma across
@@ -60,7 +47,7 @@ TEST_CASE("edge lobe: random configurations, Rv across an edge, m in [200, 1e4],
     // Rv within 4 lobe widths (1 / sqrt(m)) of a point on an edge, either side.
     const int k = int(rng.uniform(0, double(c.poly.size()) - 1e-9));
     c.sp.rv = across_edge(c.poly, c.sp.p, k, rng.uniform(0.05, 0.95), rng.uniform(-4, 4) / std::sqrt(c.sp.shininess));
-    const EdgeLobeAndAdaptive b = evaluate(c.poly, c.sp);
+    const FormAndAdaptive b = evaluate(c.poly, c.sp);
     if (!b.lit) continue;
     ++lit;
     CHECK(std::isfinite(b.form.value));
@@ -101,7 +88,7 @@ TEST_CASE("edge lobe: named cases, accepted across one edge, refused at a corner
   // the adaptive form; inside, more than half of the lobe; outside, less.
   for (const double degrees : {-1.0, 1.0}) {
     const Vec3d rv = normalize(Vec3d{std::tan(std::atan(0.5) + degrees * M_PI / 180), 0, 1});
-    const EdgeLobeAndAdaptive b = evaluate(square, {{0, 0, 0}, up, rv, m});
+    const FormAndAdaptive b = evaluate(square, {{0, 0, 0}, up, rv, m});
     INFO(degrees, " degrees across the edge: edge lobe ", b.form.value, " adaptive ", b.adaptive);
     REQUIRE(b.form.accepted);
     CHECK(std::abs(b.form.value - b.adaptive) <= kAreaClosedBound * b.adaptive);
@@ -110,7 +97,7 @@ TEST_CASE("edge lobe: named cases, accepted across one edge, refused at a corner
   }
   // Rv exactly toward the edge's middle: half the lobe on the light, to rounding.
   {
-    const EdgeLobeAndAdaptive b = evaluate(square, {{0, 0, 0}, up, normalize(Vec3d{0.5, 0, 1}), m});
+    const FormAndAdaptive b = evaluate(square, {{0, 0, 0}, up, normalize(Vec3d{0.5, 0, 1}), m});
     REQUIRE(b.form.accepted);
     CHECK(std::abs(b.form.value - M_PI / (m + 1)) <= 1e-12 * b.form.value);
   }
@@ -146,7 +133,7 @@ TEST_CASE("edge lobe: the horizon as the edge, the back of a two-sided light, a 
   // 2, reaches 63 degrees from Rv): the horizon's edge is the one within reach.
   for (const double degrees : {2.0, -2.0}) {
     const double t = degrees * M_PI / 180;
-    const EdgeLobeAndAdaptive b = evaluate(square_down(2, 1), {{0, 0, 0}, Vec3d{std::cos(t), 0, std::sin(t)}, up, m});
+    const FormAndAdaptive b = evaluate(square_down(2, 1), {{0, 0, 0}, Vec3d{std::cos(t), 0, std::sin(t)}, up, m});
     INFO("horizon ", degrees, " degrees: edge lobe ", b.form.value, " adaptive ", b.adaptive);
     REQUIRE(b.form.accepted);
     CHECK(std::abs(b.form.value - b.adaptive) <= kAreaClosedBound * b.adaptive);
@@ -157,8 +144,8 @@ TEST_CASE("edge lobe: the horizon as the edge, the back of a two-sided light, a 
   {
     const auto square = square_down(0.5, 1);
     const Vec3d rv = normalize(Vec3d{std::tan(std::atan(0.5) - M_PI / 180), 0.1, 1});
-    const EdgeLobeAndAdaptive front = evaluate(square, {{0, 0, 0}, up, rv, m}, true);
-    const EdgeLobeAndAdaptive back = evaluate(square, {{0, 0, 2}, -up, Vec3d{rv.x, rv.y, -rv.z}, m}, true);
+    const FormAndAdaptive front = evaluate(square, {{0, 0, 0}, up, rv, m}, true);
+    const FormAndAdaptive back = evaluate(square, {{0, 0, 2}, -up, Vec3d{rv.x, rv.y, -rv.z}, m}, true);
     INFO("front ", front.form.value, " back ", back.form.value, " adaptive ", back.adaptive);
     REQUIRE(front.form.accepted);
     REQUIRE(back.form.accepted);
@@ -177,7 +164,7 @@ TEST_CASE("edge lobe: the horizon as the edge, the back of a two-sided light, a 
     // middle bounds the inner pentagon (winding 2) against the point at 0 degrees (winding 1), and
     // the edges crossing it are 6.4 degrees away (the reach is 4.2).
     const Vec3d rv = normalize(Vec3d{0.5 * std::cos(2 * M_PI / 5) + 0.001, 0, 1});
-    const EdgeLobeAndAdaptive b = evaluate(star, {{0, 0, 0}, up, rv, m});
+    const FormAndAdaptive b = evaluate(star, {{0, 0, 0}, up, rv, m});
     INFO("pentagram: edge lobe ", b.form.value, " accepted ", b.form.accepted, " adaptive ", b.adaptive,
          " = ", b.adaptive / (2 * M_PI / (m + 1)), " full lobes");
     CHECK_FALSE(b.form.accepted);
@@ -192,7 +179,7 @@ TEST_CASE("edge lobe: --specular exact takes it above kAreaEdgeLobeDispatchMinSh
     const Vec3d rv = normalize(Vec3d{std::tan(std::atan(0.5) - 0.5 / std::sqrt(m)), 0.05, 1});
     const ShadingPoint<double> sp{{0, 0, 0}, up, rv, m};
     const double e = shade_area(light_of(poly), sp, spec_options(SpecularMethod::kExact, 1e-9)).specular;
-    const EdgeLobeAndAdaptive b = evaluate(poly, sp);
+    const FormAndAdaptive b = evaluate(poly, sp);
     INFO("m=", m, " exact=", e, " adaptive=", b.adaptive);
     REQUIRE(b.form.accepted);
     CHECK(e == b.form.value);

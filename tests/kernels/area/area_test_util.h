@@ -172,4 +172,30 @@ inline SpecularOptions spec_options(SpecularMethod method, double tol = 1e-9, in
   return o;
 }
 
+// One of the area specular's closed forms (a callable (visible, view, rv, m) -> AreaSpecularClosed)
+// on the horizon-clipped light, beside the adaptive form at tolerance 1e-13, relative only
+// (bounded_tails = false), as the comparison; compare_refused = false leaves the adaptive form
+// out where the form refuses.
+struct FormAndAdaptive {
+  AreaSpecularClosed<double> form{0, 0, false};
+  double adaptive = 0;
+  bool lit = false;
+};
+template <class Form>
+FormAndAdaptive form_and_adaptive(const std::vector<Vec3d>& poly, const ShadingPoint<double>& sp, Form form,
+                                  bool compare_refused = true, bool two_sided = false) {
+  const PreparedAreaLight<double> pl = prepare_area_light(light_of(poly, two_sided));
+  const AreaView<double> view = make_area_view(pl, sp.p);
+  FormAndAdaptive r;
+  if (!view.lit) return r;
+  ClipPolygon<double> visible;
+  clip_to_horizon(pl, view, sp.n, visible);
+  if (visible.count < 3) return r;
+  r.lit = true;
+  r.form = form(visible, view, sp.rv, sp.shininess);
+  if (r.form.accepted || compare_refused)
+    r.adaptive = area_specular_exact(visible, view, sp.rv, sp.shininess, 1e-13, false);
+  return r;
+}
+
 }  // namespace vlit::test

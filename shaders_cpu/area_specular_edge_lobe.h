@@ -28,8 +28,9 @@
 // Where it applies: mirror-like materials whose highlight lies across one edge of a light: the reach
 // (cos^{m+1} delta = kAreaClosedBound / (2n)) is about 4 degrees at m = 1e4 for a quad, 13 at
 // m = 1e3, 30 at m = 200.
-// Cost: one cross product per edge (the arc test where the great circle comes within reach), one
-// winding number, one phong_lune: O(n) plus about a hundred multiply-adds whatever m.
+// Cost: a bounding-cone test (refusing lobes far from the whole light at once), one cross product
+// per edge (the arc test where the great circle comes within reach), one winding number, one
+// phong_lune: O(n) plus about a hundred multiply-adds whatever m.
 // Measured: tests/kernels/area/area_specular_edge_lobe_test.cpp (`./build/release/tests/area_light_tests
 // -tc="edge lobe*" -s`); speed in docs/area-lights.md "One edge across a narrow lobe".
 // Float: computes in double (AreaReal) like the other area kernels.
@@ -66,6 +67,20 @@ AreaSpecularClosed<R> area_specular_edge_lobe(const ClipPolygon<R>& horizon_clip
   const R reach2 = std::exp(R(2) * std::log(bound / (R(2) * winding_bound)) / (m + R(1)));
   const R needed = R(1) - reach2;
   const Vec3<R> rv = normalize(rv_in);
+  // A lobe far from the whole light (most refusals: tails): every point of the polygon lies within
+  // the angle rho = asin(radius / |D|) of the direction to its centre, so no edge is within reach
+  // where angle(Rv, D) > rho + reach. One dot product instead of the edges' cross products.
+  {
+    R radius2 = 0;
+    for (int i = 0; i < n; ++i) radius2 = std::max(radius2, length_squared(horizon_clipped.d[i]));
+    const R dist2 = length_squared(view.D);
+    if (dist2 > radius2) {
+      const R dist = std::sqrt(dist2), sin_rho = std::sqrt(radius2 / dist2), cos_rho = std::sqrt(R(1) - radius2 / dist2);
+      const R cos_within = cos_rho * std::sqrt(reach2) - sin_rho * std::sqrt(needed);  // cos(rho + reach)
+      // (rho < pi / 2 and reach <= pi / 2, so cos is decreasing up to rho + reach; 1e-9 for rounding)
+      if (dot(rv, view.D) < (cos_within - R(1e-9)) * dist) return r;
+    }
+  }
   int cut = -1;             // the one edge within reach
   R cut_along = 0, cut_length = 0;
   R far_cos2 = 0;           // the largest cos^2 of the distance from Rv to any other edge

@@ -7,6 +7,10 @@
 // m >= 0, the quantity of area_specular_closed.h and area_specular_exact.h, where it can bound the
 // rest.
 //
+// Sources: the cap argument of area_specular_cap.h; the split of the lobe by a great circle derived
+// in phong_lune.h (Abramowitz and Stegun 26.5.1, 26.5.8). Conventions: conventions.h, geometry of
+// area_polygon.h.
+//
 // Derivation. Let delta be the angular distance from Rv to the nearest point of every edge of the
 // horizon-clipped polygon but one, edge i, which comes closer: its great circle passes at beta <
 // delta from Rv, with its nearest point (the foot of the perpendicular from Rv) inside the edge. The

@@ -200,15 +200,22 @@ int winding_number(const ClipPolygon<R>& poly, const AreaView<R>& view, const Ve
   return wn;
 }
 
+// Winding number of the (clipped) polygon about the point where the ray P + t dir (t > 0) meets
+// the light's plane; 0 where the ray does not go toward the plane (or meets it beyond what double
+// holds).
+template <class R>
+int ray_winding_number(const ClipPolygon<R>& poly, const AreaView<R>& view, const Vec3<R>& dir) {
+  const R toward = -dot(view.normal, dir);  // > 0: the ray goes toward the light's plane
+  if (!(toward > R(0)) || poly.count < 3) return 0;
+  const R t = view.height / toward;
+  if (!std::isfinite(t)) return 0;
+  return winding_number(poly, view, dir * t - view.D);  // the hit, relative to c
+}
+
 // True if the ray P + t dir (t > 0) hits the inside of the (clipped) polygon.
 template <class R>
 bool ray_hits_polygon(const ClipPolygon<R>& poly, const AreaView<R>& view, const Vec3<R>& dir) {
-  const R toward = -dot(view.normal, dir);  // > 0: the ray goes toward the light's plane
-  if (!(toward > R(0)) || poly.count < 3) return false;
-  const R t = view.height / toward;
-  if (!std::isfinite(t)) return false;
-  const Vec3<R> hit = dir * t - view.D;  // relative to c
-  return winding_number(poly, view, hit) != 0;
+  return ray_winding_number(poly, view, dir) != 0;
 }
 
 // a x b for a = D + d_i, b = D + d_j (D = c - P, d relative to the light's centre c), by the

@@ -62,13 +62,8 @@ AreaSpecularClosed<R> area_specular_cap(const ClipPolygon<R>& horizon_clipped, c
     sin2_delta = std::min(sin2_delta, along * along / length2);
   }
   // Rv must hit the light's plane inside the polygon, which winds once about the hit point (a
-  // polygon that winds twice about Rv would count the cap twice): ray_hits_polygon's test, with the
-  // winding number's value kept.
-  const R toward = -dot(view.normal, rv);
-  if (!(toward > R(0))) return r;
-  const R t = view.height / toward;
-  if (!std::isfinite(t)) return r;
-  if (std::abs(winding_number(horizon_clipped, view, rv * t - view.D)) != 1) return r;
+  // polygon that winds twice about Rv would count the cap twice).
+  if (std::abs(ray_winding_number(horizon_clipped, view, rv)) != 1) return r;
   // Accepted: every edge at least delta away. The bound (1 - sin^2 delta)^{(m+1)/2} is reported
   // (by log1p for sin^2 delta near 0).
   r.condition = std::exp(R(0.5) * (m + R(1)) * std::log1p(-sin2_delta));

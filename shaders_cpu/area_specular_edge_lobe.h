@@ -68,8 +68,8 @@ AreaSpecularClosed<R> area_specular_edge_lobe(const ClipPolygon<R>& horizon_clip
   // Reach: acceptance needs the truncation n 2 pi cos^{m+1}(delta) / (m + 1) below bound / 2 of a
   // value at most 2 pi / (m + 1), so every edge but one lies where cos^{m+1} <= bound / (2n):
   // cos^2 <= reach2, i.e. sin^2 >= needed.
-  const R reach2 = std::exp(R(2) * std::log(bound / (R(2) * winding_bound)) / (m + R(1)));
-  const R needed = R(1) - reach2;
+  const R needed = -std::expm1(R(2) * std::log(bound / (R(2) * winding_bound)) / (m + R(1)));
+  const R reach2 = R(1) - needed;
   const Vec3<R> rv = normalize(rv_in);
   // A lobe far from the whole light (most refusals: tails): every point of the polygon lies within
   // the angle rho = asin(radius / |D|) of the direction to its centre, so no edge is within reach
@@ -119,13 +119,7 @@ AreaSpecularClosed<R> area_specular_edge_lobe(const ClipPolygon<R>& horizon_clip
   // The winding numbers on both sides: Rv's (0 where Rv does not meet the light's plane), and the
   // other side's one more crossing to n.w < 0 (area_polygon.h's convention: interior on the side
   // n.w < 0 for a polygon counter-clockwise as seen from P, winding +1 there).
-  int w_near = 0;
-  const R toward = -dot(view.normal, rv);
-  if (toward > R(0)) {
-    const R t = view.height / toward;
-    if (!std::isfinite(t)) return r;
-    w_near = winding_number(horizon_clipped, view, rv * t - view.D);
-  }
+  const int w_near = ray_winding_number(horizon_clipped, view, rv);
   const int w_far = w_near + (cut_along > R(0) ? 1 : -1);
   if (std::abs(w_near) > 1 || std::abs(w_far) > 1) return r;
   const R sin_beta = std::min(std::fabs(cut_along) / cut_length, R(1));

@@ -38,10 +38,12 @@ struct ShadeOptions {
   // (src/shadow/silhouette_cluster.h) instead of once per vertex; same results. Off: the
   // benchmarks' baseline.
   bool shadow_clusters = true;
-  // Vertices per cluster (neighbours in Morton order). Any size gives the same results; 32 was
-  // the fastest of 16-128 on MetalRoughSpheres, and 16-64 are within run-to-run noise on the
-  // bowling lane (docs/shadows.md, `shadow_bench --cluster-sizes`).
-  int shadow_cluster_size = 32;
+  // Most vertices per cluster (neighbours in Morton order; a cluster also ends where its box
+  // would grow wider than a fifth of the light's diameter, src/shadow/shadowed_vertices.cpp).
+  // Any size gives the same results; 64 was faster than 32 on the bowling lane, DamagedHelmet
+  // and MetalRoughSpheres, and than 128 and 256 on the lane (docs/shadows.md, "Stop 45";
+  // `shadow_bench --cluster-sizes`).
+  int shadow_cluster_size = 64;
   // A mesh vertex is also hidden by the wedges of triangles that touch it across a crease or a
   // seam (src/shadow/crease_wedges.h). Off: every triangle touching the vertex's position hides
   // nothing (the behaviour before; for comparisons).

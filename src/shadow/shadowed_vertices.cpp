@@ -13,6 +13,10 @@ namespace vlit {
 namespace {
 
 constexpr long kBlock = 8;         // vertices per group without clusters
+// The widest cluster the bake forms: the diagonal of its box, relative to the light's diameter.
+// 0.1 and 0.2 were the fastest of 0.025-0.5 on the bowling lane and DamagedHelmet; checked on
+// MetalRoughSpheres and shadow_bench's spheres (docs/shadows.md, "Stop 45" in "Benchmarks").
+constexpr double kClusterSpan = 0.2;
 
 // Interleaves the low 21 bits of x, y and z (a Morton code).
 std::uint64_t spread_bits(std::uint64_t x) {
@@ -46,6 +50,34 @@ std::vector<std::uint32_t> morton_order(const ShadingPoint<double>* points, long
   return order;
 }
 
+// The clusters of one light, as the first vertex (into `order`) of each, then `count`: runs of
+// consecutive vertices in Morton order, each of at most `size` vertices and with a box whose
+// diagonal stays within `span`. Morton order jumps where it passes from one cell of its grid to
+// the next, so a run of fixed length may hold two patches of the surface far apart. Its box,
+// and the band of occluder triangles whose facing varies over the box (silhouette_cluster.h),
+// are then much wider than each of its vertices needs: each vertex reads that band's edges,
+// most of which weigh nothing from it.
+std::vector<long> cluster_starts(const ShadingPoint<double>* points, const std::vector<std::uint32_t>& order, long count,
+                                 int size, double span) {
+  std::vector<long> starts;
+  Aabb box;
+  int members = 0;
+  for (long i = 0; i < count; ++i) {
+    Aabb grown = box;
+    grown.grow(points[order[i]].p);
+    if (members == 0 || members == size || length(grown.hi - grown.lo) > span) {
+      starts.push_back(i);
+      grown = Aabb{};
+      grown.grow(points[order[i]].p);
+      members = 0;
+    }
+    box = grown;
+    ++members;
+  }
+  starts.push_back(count);
+  return starts;
+}
+
 template <class K>
 void shade_vertex(const PreparedLight<double>& light, const K& kernel, const ShadeOptions& options,
                   const ShadingPoint<double>& sp, Vec3d& diffuse, Vec3d* specular, const OccluderBvh& occluders,
@@ -74,13 +106,14 @@ void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOp
           if (options.area_shadows == AreaShadowMethod::kSilhouette && options.shadow_clusters && !occluders.brute_force()) {
           const std::vector<std::uint32_t> order = morton_order(points, count);
           const PreparedAreaLight<double> polygon = shadowed_polygon(kernel);
-          const int cluster_size = std::max(1, options.shadow_cluster_size);
-          const long clusters = (count + cluster_size - 1) / cluster_size;
+          const std::vector<long> starts = cluster_starts(points, order, count, std::max(1, options.shadow_cluster_size),
+                                                          kClusterSpan * 2 * polygon.radius);
+          const long clusters = static_cast<long>(starts.size()) - 1;
 #pragma omp parallel for schedule(dynamic, 1)
           for (long c = 0; c < clusters; ++c) {
             if (cancelled()) continue;
-            const long begin = c * cluster_size;
-            const int n = static_cast<int>(std::min<long>(cluster_size, count - begin));
+            const long begin = starts[c];
+            const int n = static_cast<int>(starts[c + 1] - begin);
             thread_local SilhouetteCluster cluster;
             thread_local SharedVisibility seen;
             thread_local std::vector<int> keeps, asks;  // per vertex of a position: horizon_keeps; its class, or -1

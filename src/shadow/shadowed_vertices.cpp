@@ -14,8 +14,9 @@ namespace {
 
 constexpr long kBlock = 8;         // vertices per group without clusters
 // The widest cluster the bake forms: the diagonal of its box, relative to the light's diameter.
-// 0.1 and 0.2 were the fastest of 0.025-0.5 on the bowling lane and DamagedHelmet; checked on
-// MetalRoughSpheres and shadow_bench's spheres (docs/shadows.md, "Stop 45" in "Benchmarks").
+// 0.1 and 0.2 were the fastest of 0.025-0.5 in a sweep on the bowling lane and DamagedHelmet
+// (the sweep's switch was not kept); docs/shadows.md ("Stop 45" in "Benchmarks") has the
+// chosen value against the fixed runs of 32 on the lane, DamagedHelmet and MetalRoughSpheres.
 constexpr double kClusterSpan = 0.2;
 
 // Interleaves the low 21 bits of x, y and z (a Morton code).
@@ -63,15 +64,15 @@ std::vector<long> cluster_starts(const ShadingPoint<double>* points, const std::
   Aabb box;
   int members = 0;
   for (long i = 0; i < count; ++i) {
+    const Vec3d& p = points[order[i]].p;
     Aabb grown = box;
-    grown.grow(points[order[i]].p);
+    grown.grow(p);
     if (members == 0 || members == size || length(grown.hi - grown.lo) > span) {
       starts.push_back(i);
-      grown = Aabb{};
-      grown.grow(points[order[i]].p);
+      box = Aabb{};
       members = 0;
     }
-    box = grown;
+    box.grow(p);
     ++members;
   }
   starts.push_back(count);

@@ -276,7 +276,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
                                                  const AreaView<double>& light_view,
                                                  const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
                                                  const OccluderBvh& occluders, AreaSilhouetteScratch& s,
-                                                 const SilhouetteCluster* cluster) {
+                                                 const SilhouetteCluster* cluster, SilhouettePieces cut) {
   ++s.queries;
   // The sweep works in its own axes (sweep_axes.h); the pieces' rectangles are in the light's.
   const AreaView<double> view = in_sweep_axes(light_view, sweep_axes(light));
@@ -553,21 +553,36 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     return SilhouetteVisibility::kUndecided;
   }
 
-  // The trapezoids with t = 0, merged upward while the same two segments bound them.
+  // The trapezoids with t = 0, merged upward while the same two segments bound them (with
+  // SilhouettePieces::kChains, also while the segments that bound them continue one another).
   std::vector<AreaSilhouetteScratch::Open>& open = s.open;
   std::vector<AreaSilhouetteScratch::Open>& now = s.now;
+  std::vector<AreaSilhouetteScratch::ChainVertex>& chain = s.chain;
   open.clear();
+  chain.clear();
   using Open = AreaSilhouetteScratch::Open;
   auto close = [&](const Open& o, double v_end) {
     const SilhouetteSegment& a = seg[o.a];
     const SilhouetteSegment& b = seg[o.b];
-    double a0 = u_at(a, o.v_start), b0 = u_at(b, o.v_start), a1 = u_at(a, v_end), b1 = u_at(b, v_end);
+    double a0 = o.a0, b0 = o.b0, a1 = u_at(a, v_end), b1 = u_at(b, v_end);
     if (b0 < a0) a0 = b0 = 0.5 * (a0 + b0);
     if (b1 < a1) a1 = b1 = 0.5 * (a1 + b1);
-    const double corner_uv[4][2] = {{a0, o.v_start}, {b0, o.v_start}, {b1, v_end}, {a1, v_end}};
-    Vec3d points[4];
+    // Counter-clockwise in (u, v): the lower corners, the right chain upward, the upper corners,
+    // the left chain downward.
+    double corner_uv[kMaxChainPiece + 4][2];
+    int corners = 0;
+    auto corner = [&](double u, double v) { corner_uv[corners][0] = u, corner_uv[corners++][1] = v; };
+    corner(a0, o.v_start);
+    corner(b0, o.v_start);
+    const int right_first = corners;
+    for (int k = o.right; k >= 0; k = chain[k].below) corner(chain[k].u, chain[k].v);
+    std::reverse(corner_uv + right_first, corner_uv + corners);
+    corner(b1, v_end);
+    corner(a1, v_end);
+    for (int k = o.left; k >= 0; k = chain[k].below) corner(chain[k].u, chain[k].v);
+    Vec3d points[kMaxChainPiece + 4];
     int n = 0;
-    for (int i = 0; i < 4; ++i) {
+    for (int i = 0; i < corners; ++i) {
       const Vec3d x = f.u * corner_uv[i][0] + f.v * corner_uv[i][1];
       if (n == 0 || !(x == points[n - 1])) points[n++] = x;
     }
@@ -575,6 +590,10 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     if (n < 3) return;
     if (light_turn < 0) std::reverse(points, points + n);
     pieces.add(points, n, light_view.u, light_view.v);
+  };
+  // Segment q starts where segment p ends, on the line v = lo.
+  auto continues = [&](int p, int q, double lo) {
+    return seg[p].v1 == lo && seg[q].v0 == lo && seg[p].u1 == seg[q].u0;
   };
   // A slab thinner than this fraction of R (a nearly horizontal segment makes one an ulp high)
   // cannot order its segments: it is left out (its area is below that fraction of R's).
@@ -626,13 +645,38 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
       if (t < 0) return ++s.undecided, SilhouetteVisibility::kUndecided;
       if (t == 0 && i + 1 < n) {
         const int a = sorted[i].second, b = sorted[i + 1].second;
-        double v_start = lo;
+        Open o{a, b, lo, u_at(seg[a], lo), u_at(seg[b], lo)};
         const int j = open_at[a];
         if (j >= 0 && open[j].b == b) {
-          v_start = open[j].v_start;
+          o = open[j];
           continued[j] = 1;
+        } else if (cut == SilhouettePieces::kChains && o.a0 < o.b0) {
+          // A piece below whose bounding segments are a and b or end where they start: it
+          // grows on, with a vertex where a side turns from one segment to the next.
+          for (std::size_t k = 0; k < open.size(); ++k) {
+            if (continued[k]) continue;
+            const bool same_left = open[k].a == a, same_right = open[k].b == b;
+            if (!(same_left || continues(open[k].a, a, lo)) || !(same_right || continues(open[k].b, b, lo))) continue;
+            const int turns = !same_left + !same_right;
+            if (open[k].chain_vertices + turns > kMaxChainPiece) break;
+            Open grown = open[k];
+            grown.a = a;
+            grown.b = b;
+            grown.chain_vertices += turns;
+            if (!same_left) {
+              chain.push_back({o.a0, lo, grown.left});
+              grown.left = static_cast<int>(chain.size()) - 1;
+            }
+            if (!same_right) {
+              chain.push_back({o.b0, lo, grown.right});
+              grown.right = static_cast<int>(chain.size()) - 1;
+            }
+            o = grown;
+            continued[k] = 1;
+            break;
+          }
         }
-        now.push_back({a, b, v_start});
+        now.push_back(o);
       }
     }
     if (t < 1) return ++s.undecided, SilhouetteVisibility::kUndecided;

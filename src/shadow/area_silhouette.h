@@ -25,8 +25,8 @@
 //     the leftmost trapezoid of the other slabs follows from the segments that end on R's left
 //     side.
 //  4. The trapezoids with t = 0 are the visible pieces; vertically adjacent ones between the
-//     same two segments are merged. The kernels run on them as on the pieces of
-//     visible_area_pieces.
+//     same two segments are merged (and, with SilhouettePieces::kChains, those whose segments
+//     continue one another). The kernels run on them as on the pieces of visible_area_pieces.
 // With a cluster (silhouette_cluster.h) that holds P, the silhouette comes from the cluster's
 // lists instead of a search of the BVH.
 // Checks: t >= 0 everywhere and t >= 1 outside L; when one fails (or no shadow ray could be
@@ -94,8 +94,21 @@ struct AreaSilhouetteScratch {
   std::vector<std::pair<double, int>> by_start;  // (v0, segment), for the events and the crossing search
   std::vector<std::pair<double, int>> sorted;    // the reference ray's gaps; then a slab's (u, segment)
   std::vector<std::pair<double, double>> light_uv;
-  struct Open { int a, b; double v_start; };  // a trapezoid still growing upward
+  // A piece still growing upward: bounded on the left by segment a and on the right by b in the
+  // slab being swept, from v_start (where its lower corners a0, b0 lie) up. With chains merged,
+  // the segments that bounded it lower down end where a and b start, at the vertices of its
+  // left and right chains (`chain`, from the highest down; -1: none).
+  struct Open {
+    int a, b;
+    double v_start, a0, b0;
+    int left = -1, right = -1, chain_vertices = 0;
+  };
   std::vector<Open> open, now;
+  struct ChainVertex {
+    double u, v;
+    int below;  // the chain's next vertex down, or -1
+  };
+  std::vector<ChainVertex> chain;
   std::vector<int> open_at;     // per segment: the index in `open` of the trapezoid it bounds on the left, or -1
   std::vector<char> continued;  // per trapezoid of `open`: the slab being swept continues it
   LightPieces pieces;
@@ -109,10 +122,21 @@ enum class SilhouetteVisibility {
   kUndecided,   // a consistency check failed: use visible_area_pieces
 };
 
+// How the visible part is cut into pieces. kTrapezoids: convex pieces, each bounded by two
+// segments (and two lines of constant v). kChains: a piece also continues upward where the
+// segment bounding one of its sides ends and another starts at the same point (along a
+// silhouette made of many short edges), so the pieces are far fewer, simple and monotone in v
+// but not always convex, with at most kMaxChainPiece corners besides their four: for kernels
+// whose result is a sum over a piece's edges (the diffuse, eq. 9), to which the cuts between
+// trapezoids only add terms.
+enum class SilhouettePieces { kTrapezoids, kChains };
+inline constexpr int kMaxChainPiece = 32;
+
 SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>& light,
                                                  const AreaView<double>& view,
                                                  const ClipPolygon<double>& horizon_clipped, const Vec3d& p,
                                                  const OccluderBvh& occluders, AreaSilhouetteScratch& scratch,
-                                                 const SilhouetteCluster* cluster = nullptr);
+                                                 const SilhouetteCluster* cluster = nullptr,
+                                                 SilhouettePieces cut = SilhouettePieces::kTrapezoids);
 
 }  // namespace vlit

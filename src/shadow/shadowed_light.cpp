@@ -128,7 +128,8 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     if (seen->state == Shared::kUnoccluded) nothing_reaches = true;
     else visible = &seen->pieces;
   } else if (options.area_shadows == AreaShadowMethod::kSilhouette) {
-    switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette, cluster)) {
+    switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette, cluster,
+                                        silhouette_pieces_for(options, disk != nullptr))) {
       case SilhouetteVisibility::kUnoccluded: nothing_reaches = true; break;
       case SilhouetteVisibility::kPieces: visible = &silhouette.pieces; break;
       case SilhouetteVisibility::kUndecided: break;
@@ -237,8 +238,14 @@ double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
 
 }  // namespace
 
+SilhouettePieces silhouette_pieces_for(const ShadeOptions& options, bool disk) {
+  return effective_specular(options).method == SpecularMethod::kNone && !disk ? SilhouettePieces::kChains
+                                                                              : SilhouettePieces::kTrapezoids;
+}
+
 void see_light_above_horizon(const PreparedAreaLight<double>& polygon, const ShadingPoint<double>& sp,
-                             const OccluderBvh& occluders, const SilhouetteCluster* cluster, SharedVisibility& out) {
+                             const OccluderBvh& occluders, const SilhouetteCluster* cluster, SilhouettePieces cut,
+                             SharedVisibility& out) {
   using State = SharedVisibility::State;
   out.state = State::kUnlit;
   out.pieces.clear();
@@ -248,7 +255,7 @@ void see_light_above_horizon(const PreparedAreaLight<double>& polygon, const Sha
   clip_to_horizon(polygon, view, sp.n, horizon);
   if (horizon.count < 3) return;
   AreaSilhouetteScratch& silhouette = silhouette_scratch();
-  switch (visible_area_by_silhouettes(polygon, view, horizon, sp.p, occluders, silhouette, cluster)) {
+  switch (visible_area_by_silhouettes(polygon, view, horizon, sp.p, occluders, silhouette, cluster, cut)) {
     case SilhouetteVisibility::kUnoccluded: out.state = State::kUnoccluded; break;
     case SilhouetteVisibility::kPieces:
       out.state = State::kPieces;

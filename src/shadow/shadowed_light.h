@@ -28,6 +28,7 @@
 #include <span>
 
 #include "shading/prepared_light.h"
+#include "shadow/area_silhouette.h"
 #include "shadow/area_visibility.h"
 #include "shadow/crease_wedges.h"
 #include "shadow/occluder_bvh.h"
@@ -52,10 +53,16 @@ struct SharedVisibility {
   LightPieces pieces;
 };
 
+// How the silhouette method cuts the visible part for these options (area_silhouette.h): into
+// chains where only the diffuse reads the pieces (no specular, not a disk: disk_pieces.h
+// intersects convex pieces with the circle), else into trapezoids.
+SilhouettePieces silhouette_pieces_for(const ShadeOptions& options, bool disk);
+
 // Fills `out` for sp (its position and horizon) by silhouettes (area_silhouette.h), with the
-// cluster's lists when the cluster holds sp (as shade_kernel_shadowed).
+// cluster's lists when the cluster holds sp (as shade_kernel_shadowed), cut as `cut` says.
 void see_light_above_horizon(const PreparedAreaLight<double>& polygon, const ShadingPoint<double>& sp,
-                             const OccluderBvh& occluders, const SilhouetteCluster* cluster, SharedVisibility& out);
+                             const OccluderBvh& occluders, const SilhouetteCluster* cluster, SilhouettePieces cut,
+                             SharedVisibility& out);
 
 // cluster: for area and disk lights by silhouettes, a cluster holding sp (silhouette_cluster.h,
 // prepared for shadowed_polygon(kernel)) whose lists replace the per-vertex search; ignored

@@ -167,7 +167,8 @@ void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOp
                   shade_at(i, nullptr);
                   continue;
                 }
-                see_light_above_horizon(polygon, sp_at(i), occluders, &cluster, seen);
+                see_light_above_horizon(polygon, sp_at(i), occluders, &cluster,
+                                        silhouette_pieces_for(options, std::is_same_v<K, PreparedDiskLight<double>>), seen);
                 for (int j = i; j < g1; ++j)
                   if (asks[j - g0] == a) shade_at(j, &seen);
               }

@@ -13,6 +13,7 @@
 #include "load/load_scene.h"
 #include "shadow/area_silhouette.h"
 #include "shadow/shadowed_vertices.h"
+#include "shadow/sweep_axes.h"
 #include "shadow_test_util.h"
 
 using namespace vlit;
@@ -168,6 +169,129 @@ TEST_CASE("silhouettes = triangle cuts: a bumpy surface shadowing its own vertic
   CHECK(agree.diffuse <= 1e-9);
   CHECK(agree.specular <= 1e-7);
   CHECK(decided >= 0.95);
+}
+
+// Pieces as (u, v) in the view's frame, and whether one is a simple polygon turning counter-
+// clockwise in that frame (no two of its edges that do not share a corner meet).
+std::vector<std::pair<double, double>> piece_uv(const LightPieces& pieces, std::size_t i, const AreaView<double>& view) {
+  std::vector<std::pair<double, double>> uv;
+  for (int k = pieces.start[i]; k < pieces.start[i + 1]; ++k)
+    uv.push_back({dot(view.u, pieces.points[k]), dot(view.v, pieces.points[k])});
+  return uv;
+}
+
+double signed_twice_area(const std::vector<std::pair<double, double>>& uv) {
+  double sum = 0;
+  for (std::size_t k = 0; k < uv.size(); ++k) {
+    const auto& [ax, ay] = uv[k];
+    const auto& [bx, by] = uv[(k + 1) % uv.size()];
+    sum += ax * by - bx * ay;
+  }
+  return sum;
+}
+
+bool simple_polygon(const std::vector<std::pair<double, double>>& uv) {
+  const std::size_t n = uv.size();
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;  // they share corner 0
+      const auto& [ax, ay] = uv[i];
+      const auto& [bx, by] = uv[(i + 1) % n];
+      const auto& [cx, cy] = uv[j];
+      const auto& [dx, dy] = uv[(j + 1) % n];
+      const int c = orient2_sign(ax, ay, bx, by, cx, cy), d = orient2_sign(ax, ay, bx, by, dx, dy);
+      const int a = orient2_sign(cx, cy, dx, dy, ax, ay), b = orient2_sign(cx, cy, dx, dy, bx, by);
+      if (c * d <= 0 && a * b <= 0 && (c != 0 || d != 0 || a != 0 || b != 0)) return false;
+    }
+  return true;
+}
+
+TEST_CASE("silhouettes: pieces merged along chains cover what the trapezoids cover") {
+  // SilhouettePieces::kChains continues a piece where the segment bounding it ends and the next
+  // one of a silhouette starts: refined spheres, whose silhouettes are chains of many short
+  // edges, seen from tilted floor points, with the light's horizon cut. The same answer, the same
+  // diffuse (eq. 9 over the pieces) and area, simple counter-clockwise pieces within the size
+  // limit, and far fewer of them.
+  const PreparedLight<double> light = prepare_light<double>(area_source(square_light(1, 3)));
+  const PreparedAreaLight<double>& panel = area_of(light);
+  std::mt19937_64 rng(2027);
+  std::uniform_real_distribution<double> u(-1.2, 1.2), tilt(-0.6, 0.6);
+  long compared = 0, trapezoids = 0, chains = 0, largest = 0;
+  double diffuse = 0, area = 0;
+  for (int levels : {1, 2, 3, 4}) {
+    const OccluderBvh bvh = make_bvh(icosphere({0.1, -0.05, 1.4}, 0.55, levels));
+    for (int k = 0; k < 40; ++k) {
+      const ShadingPoint<double> sp = make_shading_point(Vec3d{u(rng), u(rng), 0}, normalize(Vec3d{tilt(rng), tilt(rng), 1}),
+                                                         Vec3d{0, 0, 4}, 8.0);
+      const AreaView<double> view = make_area_view(panel, sp.p);
+      ClipPolygon<double> horizon;
+      clip_to_horizon(panel, view, sp.n, horizon);
+      if (!view.lit || horizon.count < 3) continue;
+      AreaSilhouetteScratch by_trapezoids, by_chains;
+      const SilhouetteVisibility a = visible_area_by_silhouettes(panel, view, horizon, sp.p, bvh, by_trapezoids, nullptr,
+                                                                 SilhouettePieces::kTrapezoids);
+      const SilhouetteVisibility b = visible_area_by_silhouettes(panel, view, horizon, sp.p, bvh, by_chains, nullptr,
+                                                                 SilhouettePieces::kChains);
+      REQUIRE(a == b);
+      if (a != SilhouetteVisibility::kPieces) continue;
+      ++compared;
+      trapezoids += static_cast<long>(by_trapezoids.pieces.size());
+      chains += static_cast<long>(by_chains.pieces.size());
+      const double open = area_diffuse_contour(panel, view, horizon, sp.n);
+      double diffuse_a = 0, diffuse_b = 0, area_a = 0, area_b = 0;
+      ClipPolygon<double> piece;
+      auto load = [&](const LightPieces& pieces, std::size_t i) -> const ClipPolygon<double>& {
+        piece.count = pieces.start[i + 1] - pieces.start[i];
+        std::copy(pieces.points.begin() + pieces.start[i], pieces.points.begin() + pieces.start[i + 1], piece.d.begin());
+        return piece;
+      };
+      for (std::size_t i = 0; i < by_trapezoids.pieces.size(); ++i) {
+        diffuse_a += area_diffuse_contour(panel, view, load(by_trapezoids.pieces, i), sp.n);
+        area_a += signed_twice_area(piece_uv(by_trapezoids.pieces, i, view));
+      }
+      for (std::size_t i = 0; i < by_chains.pieces.size(); ++i) {
+        diffuse_b += area_diffuse_contour(panel, view, load(by_chains.pieces, i), sp.n);
+        const std::vector<std::pair<double, double>> uv = piece_uv(by_chains.pieces, i, view);
+        area_b += signed_twice_area(uv);
+        largest = std::max(largest, static_cast<long>(uv.size()));
+        INFO("level " << levels << ", point " << k << ", piece " << i);
+        CHECK(uv.size() <= static_cast<std::size_t>(kMaxChainPiece + 4));
+        CHECK(signed_twice_area(uv) > 0);
+        CHECK(simple_polygon(uv));
+      }
+      diffuse = std::max(diffuse, std::abs(diffuse_a - diffuse_b) / open);
+      area = std::max(area, std::abs(area_a - area_b) / (2 * panel.area));
+    }
+  }
+  MESSAGE("chains: " << compared << " partly hidden points, " << trapezoids << " trapezoids, " << chains
+                     << " chain pieces (largest " << largest << " corners); diffuse " << diffuse << ", area " << area);
+  CHECK(compared >= 60);
+  CHECK(diffuse <= 1e-12);
+  CHECK(area <= 1e-12);
+  CHECK(3 * chains < trapezoids);
+
+  // Two triangles, one ending and the other starting on one line of constant v (their corners
+  // project to the same bits): the visible part's left side passes from one to the other there,
+  // but along that line, not at one point. A piece must not continue from the first's side to the
+  // second's.
+  const SweepAxes axes = sweep_axes(panel);
+  auto at = [&](double a, double b) { return axes.u * a + axes.v * b + Vec3d{0, 0, 1.5}; };
+  const OccluderBvh steps = make_bvh({{at(-0.3, -0.4), at(0.1, -0.15), at(0.1, 0)}, {at(-0.1, 0), at(-0.1, 0.4), at(-0.5, 0.4)}});
+  const ShadingPoint<double> sp = make_shading_point(Vec3d{0, 0, 0}, Vec3d{0, 0, 1}, Vec3d{0, 0, 4}, 8.0);
+  const AreaView<double> view = make_area_view(panel, sp.p);
+  ClipPolygon<double> horizon;
+  clip_to_horizon(panel, view, sp.n, horizon);
+  AreaSilhouetteScratch by_trapezoids, by_chains;
+  REQUIRE(visible_area_by_silhouettes(panel, view, horizon, sp.p, steps, by_trapezoids, nullptr,
+                                      SilhouettePieces::kTrapezoids) == SilhouetteVisibility::kPieces);
+  REQUIRE(visible_area_by_silhouettes(panel, view, horizon, sp.p, steps, by_chains, nullptr, SilhouettePieces::kChains) ==
+          SilhouetteVisibility::kPieces);
+  double area_a = 0, area_b = 0;
+  for (std::size_t i = 0; i < by_trapezoids.pieces.size(); ++i) area_a += signed_twice_area(piece_uv(by_trapezoids.pieces, i, view));
+  for (std::size_t i = 0; i < by_chains.pieces.size(); ++i) area_b += signed_twice_area(piece_uv(by_chains.pieces, i, view));
+  // Hidden: the two triangles' projections, 4 x (0.03 + 0.08) (the light's plane is twice as far).
+  CHECK(area_a == doctest::Approx(2 * (panel.area - 0.44)).epsilon(1e-12));
+  CHECK(std::abs(area_a - area_b) <= 1e-12 * area_a);
 }
 
 TEST_CASE("silhouettes: the answer does not depend on how a surface is triangulated") {

@@ -18,9 +18,11 @@
 //    (a) the scene grows: a field of small triangles at constant density around a fixed light
 //        and receiver (the triangles that matter stay about the same);
 //    (b) the occluder is refined: one sphere between the light and the receiver, tessellated
-//        ever finer (every triangle of its near half matters); up to 1e5 triangles.
+//        ever finer (every triangle of its near half matters); up to 1e6 triangles.
 //    Silhouettes against triangle cuts (time ratio, largest difference relative to the mean),
 //    the cuts up to 1e4 triangles for the sphere (their cost grows faster than the triangles).
+//    Beside them, a tube light across the square's middle over the same occluders (its visible
+//    intervals, linear_visibility.h).
 //    --repeat N: each silhouette loop of part 3 runs N times and the fastest run is reported (a
 //    busy machine only adds time; the results are the same bits every time).
 // --quick: small sizes only (a few seconds; ctest shadow_bench_quick checks that it runs).
@@ -323,6 +325,14 @@ void scaling(bool quick, int repeat) {
   l.name = "square";
   l.polygon = {{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2}, {0.5, -0.5, 2}};
   const PreparedLight<double> light = prepare_light<double>(l);
+  // A tube across the square's middle: linear lights keep their per-triangle intervals
+  // (linear_visibility.h), whose query is the flat triangle (P, Q0, Q1).
+  LightSource tube_source;
+  tube_source.type = LightType::kLinear;
+  tube_source.name = "tube";
+  tube_source.from = {-0.5, 0, 2};
+  tube_source.to = {0.5, 0, 2};
+  const PreparedLight<double> tube = prepare_light<double>(tube_source);
   ShadeOptions o;
   o.with_specular = false;
   o.specular.method = SpecularMethod::kNone;
@@ -332,7 +342,8 @@ void scaling(bool quick, int repeat) {
   for (int series = 0; series < 2; ++series) {
     std::printf("%s\n\n| triangles | BVH build (ms) | CPU µs per vertex (silhouettes) | CPU µs per vertex (silhouettes, "
                 "clusters of %d) | CPU µs per vertex (triangle cuts) | cuts / silhouettes | largest difference / mean "
-                "(clusters; cuts) | mean diffuse |\n|---|---|---|---|---|---|---|---|\n",
+                "(clusters; cuts) | mean diffuse | CPU µs per vertex (tube, intervals) | mean diffuse (tube) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|\n",
                 series == 0 ? "(a) the scene grows (constant density field):" : "(b) one sphere, refined:",
                 o.shadow_cluster_size);
     ShadeOptions cut_options = o;
@@ -360,6 +371,13 @@ void scaling(bool quick, int repeat) {
       double cluster_difference = 0;
       for (std::size_t i = 0; i < pts.size(); ++i)
         cluster_difference = std::max(cluster_difference, std::abs(clustered[i].x / light.radiance.x - value[i]));
+      std::vector<double> tube_value(pts.size());
+      const double tube_per_vertex = fastest_seconds(repeat, [&] {
+        for (std::size_t i = 0; i < pts.size(); ++i) tube_value[i] = shade_shadowed(tube, pts[i], o, bvh).diffuse;
+      }) / pts.size();
+      double tube_mean = 0;
+      for (double v : tube_value) tube_mean += v;
+      tube_mean /= pts.size();
       const bool cuts = series == 0 || n <= 10000;  // the cuts take ~0.5 s per vertex at 1e5 sphere triangles
       double cut_per_vertex = 0, difference = 0;
       if (cuts) {
@@ -369,12 +387,14 @@ void scaling(bool quick, int repeat) {
         cut_per_vertex = seconds_since(t) / pts.size();
       }
       if (cuts)
-        std::printf("| %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1e; %.1e | %.6f |\n", tris.size(), 1e3 * build,
-                    1e6 * per_vertex, 1e6 * cluster_per_vertex, 1e6 * cut_per_vertex, cut_per_vertex / per_vertex,
-                    cluster_difference / mean, difference / mean, mean);
+        std::printf("| %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1e; %.1e | %.6f | %.1f | %.6f |\n", tris.size(),
+                    1e3 * build, 1e6 * per_vertex, 1e6 * cluster_per_vertex, 1e6 * cut_per_vertex,
+                    cut_per_vertex / per_vertex, cluster_difference / mean, difference / mean, mean,
+                    1e6 * tube_per_vertex, tube_mean);
       else
-        std::printf("| %zu | %.1f | %.1f | %.1f | — | — | %.1e; — | %.6f |\n", tris.size(), 1e3 * build, 1e6 * per_vertex,
-                    1e6 * cluster_per_vertex, cluster_difference / mean, mean);
+        std::printf("| %zu | %.1f | %.1f | %.1f | — | — | %.1e; — | %.6f | %.1f | %.6f |\n", tris.size(), 1e3 * build,
+                    1e6 * per_vertex, 1e6 * cluster_per_vertex, cluster_difference / mean, mean, 1e6 * tube_per_vertex,
+                    tube_mean);
       std::fflush(stdout);
     }
     std::printf("\n");

@@ -355,13 +355,20 @@ void scaling(bool quick, int repeat) {
       // The sphere is one closed primitive: its back faces are skipped (occluder_triangles.h).
       const OccluderBvh bvh = series == 0 ? make_bvh(tris) : closed_bvh(tris);
       const double build = seconds_since(t);
-      std::vector<double> value(pts.size());
-      const double per_vertex = fastest_seconds(repeat, [&] {
-        for (std::size_t i = 0; i < pts.size(); ++i) value[i] = shade_shadowed(light, pts[i], o, bvh).diffuse;
-      }) / pts.size();
+      // One search per vertex: the fastest run's seconds per vertex, the diffuse of each and their mean.
+      auto per_vertex_of = [&](const PreparedLight<double>& l, std::vector<double>& values, double& mean) {
+        values.resize(pts.size());
+        const double seconds = fastest_seconds(repeat, [&] {
+          for (std::size_t i = 0; i < pts.size(); ++i) values[i] = shade_shadowed(l, pts[i], o, bvh).diffuse;
+        });
+        mean = 0;
+        for (double v : values) mean += v;
+        mean /= pts.size();
+        return seconds / pts.size();
+      };
+      std::vector<double> value;
       double mean = 0;
-      for (double v : value) mean += v;
-      mean /= pts.size();
+      const double per_vertex = per_vertex_of(light, value, mean);
       // The vertex loop's path: one BVH search per cluster of neighbouring receivers (one thread).
       std::vector<Vec3d> clustered(pts.size());
       const double cluster_per_vertex = fastest_seconds(repeat, [&] {
@@ -371,13 +378,9 @@ void scaling(bool quick, int repeat) {
       double cluster_difference = 0;
       for (std::size_t i = 0; i < pts.size(); ++i)
         cluster_difference = std::max(cluster_difference, std::abs(clustered[i].x / light.radiance.x - value[i]));
-      std::vector<double> tube_value(pts.size());
-      const double tube_per_vertex = fastest_seconds(repeat, [&] {
-        for (std::size_t i = 0; i < pts.size(); ++i) tube_value[i] = shade_shadowed(tube, pts[i], o, bvh).diffuse;
-      }) / pts.size();
+      std::vector<double> tube_value;
       double tube_mean = 0;
-      for (double v : tube_value) tube_mean += v;
-      tube_mean /= pts.size();
+      const double tube_per_vertex = per_vertex_of(tube, tube_value, tube_mean);
       const bool cuts = series == 0 || n <= 10000;  // the cuts take ~0.5 s per vertex at 1e5 sphere triangles
       double cut_per_vertex = 0, difference = 0;
       if (cuts) {

@@ -129,7 +129,7 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     else visible = &seen->pieces;
   } else if (options.area_shadows == AreaShadowMethod::kSilhouette) {
     switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette, cluster,
-                                        silhouette_pieces_for(options, disk != nullptr))) {
+                                        silhouette_pieces_for(options, disk != nullptr, !wedges.empty()))) {
       case SilhouetteVisibility::kUnoccluded: nothing_reaches = true; break;
       case SilhouetteVisibility::kPieces: visible = &silhouette.pieces; break;
       case SilhouetteVisibility::kUndecided: break;
@@ -238,9 +238,9 @@ double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
 
 }  // namespace
 
-SilhouettePieces silhouette_pieces_for(const ShadeOptions& options, bool disk) {
-  return effective_specular(options).method == SpecularMethod::kNone && !disk ? SilhouettePieces::kChains
-                                                                              : SilhouettePieces::kTrapezoids;
+SilhouettePieces silhouette_pieces_for(const ShadeOptions& options, bool disk, bool wedged) {
+  return effective_specular(options).method == SpecularMethod::kNone && !disk && !wedged ? SilhouettePieces::kChains
+                                                                                         : SilhouettePieces::kTrapezoids;
 }
 
 void see_light_above_horizon(const PreparedAreaLight<double>& polygon, const ShadingPoint<double>& sp,

@@ -54,9 +54,11 @@ struct SharedVisibility {
 };
 
 // How the silhouette method cuts the visible part for these options (area_silhouette.h): into
-// chains where only the diffuse reads the pieces (no specular, not a disk: disk_pieces.h
-// intersects convex pieces with the circle), else into trapezoids.
-SilhouettePieces silhouette_pieces_for(const ShadeOptions& options, bool disk);
+// chains where only the diffuse reads the pieces, else into trapezoids: with specular, for a disk
+// (disk_pieces.h intersects convex pieces with the circle) and where crease wedges are cut from
+// the pieces (subtract_cone clips each piece by the wedge's planes into a fixed-size polygon,
+// which a long non-convex piece could outgrow).
+SilhouettePieces silhouette_pieces_for(const ShadeOptions& options, bool disk, bool wedged);
 
 // Fills `out` for sp (its position and horizon) by silhouettes (area_silhouette.h), with the
 // cluster's lists when the cluster holds sp (as shade_kernel_shadowed), cut as `cut` says.

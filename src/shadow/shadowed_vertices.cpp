@@ -167,8 +167,11 @@ void accumulate_light_shadowed(const PreparedLight<double>& light, const ShadeOp
                   shade_at(i, nullptr);
                   continue;
                 }
+                bool wedged = false;  // some member cuts crease wedges from the shared pieces
+                for (int j = i; j < g1; ++j) wedged = wedged || (asks[j - g0] == a && !wedges_of(order[begin + j]).empty());
                 see_light_above_horizon(polygon, sp_at(i), occluders, &cluster,
-                                        silhouette_pieces_for(options, std::is_same_v<K, PreparedDiskLight<double>>), seen);
+                                        silhouette_pieces_for(options, std::is_same_v<K, PreparedDiskLight<double>>, wedged),
+                                        seen);
                 for (int j = i; j < g1; ++j)
                   if (asks[j - g0] == a) shade_at(j, &seen);
               }

@@ -269,6 +269,12 @@ TEST_CASE("silhouettes: pieces merged along chains cover what the trapezoids cov
   CHECK(diffuse <= 1e-12);
   CHECK(area <= 1e-12);
   CHECK(3 * chains < trapezoids);
+  // Who gets chains: the diffuse alone, of a polygon, with no crease wedges to cut.
+  CHECK(silhouette_pieces_for(options_with(SpecularMethod::kNone), false, false) == SilhouettePieces::kChains);
+  for (SpecularMethod method : {SpecularMethod::kExact, SpecularMethod::kPeak, SpecularMethod::kNeighborhood})
+    CHECK(silhouette_pieces_for(options_with(method), false, false) == SilhouettePieces::kTrapezoids);
+  CHECK(silhouette_pieces_for(options_with(SpecularMethod::kNone), true, false) == SilhouettePieces::kTrapezoids);
+  CHECK(silhouette_pieces_for(options_with(SpecularMethod::kNone), false, true) == SilhouettePieces::kTrapezoids);
 
   // Two triangles, one ending and the other starting on one line of constant v (their corners
   // project to the same bits): the visible part's left side passes from one to the other there,

@@ -5,15 +5,13 @@ Usage: bench/compare_baked_colors.py A.glb B.glb
 
 Prints the number of vertices, how many differ, the largest difference (in the stored colour's
 units, 1 = white) and how many differ by more than 1e-3. Both files must hold the same primitives
-in the same order (two bakes of one input). Needs python3-numpy.
+in the same order (two bakes of one input). Python's standard library only.
 """
 import json
 import struct
 import sys
 
-import numpy as np
-
-COMPONENT = {5126: ("<f4", 1.0), 5123: ("<u2", 65535.0), 5121: ("u1", 255.0)}
+COMPONENT = {5126: ("f", 1.0), 5123: ("H", 65535.0), 5121: ("B", 255.0)}  # struct format, full scale
 WIDTH = {"VEC3": 3, "VEC4": 4}
 
 
@@ -34,26 +32,26 @@ def vertex_colors(path):
                 continue
             accessor = gltf["accessors"][index]
             view = gltf["bufferViews"][accessor["bufferView"]]
-            dtype, scale = COMPONENT[accessor["componentType"]]
+            kind, scale = COMPONENT[accessor["componentType"]]
             width = WIDTH[accessor["type"]]
-            item = np.dtype(dtype).itemsize
+            item = struct.calcsize(kind)
             stride = view.get("byteStride", item * width)
             start = view.get("byteOffset", 0) + accessor.get("byteOffset", 0)
-            count = accessor["count"]
-            raw = np.frombuffer(binary[start:start + stride * count], dtype=dtype).reshape(count, stride // item)
-            colors.append(raw[:, :3].astype(float) / scale)
-    return np.concatenate(colors) if colors else np.zeros((0, 3))
+            rgb = struct.Struct("<3" + kind)
+            for k in range(accessor["count"]):
+                colors.append(tuple(c / scale for c in rgb.unpack_from(binary, start + k * stride)))
+    return colors
 
 
 def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__)
     a, b = vertex_colors(sys.argv[1]), vertex_colors(sys.argv[2])
-    if a.shape != b.shape:
+    if len(a) != len(b):
         sys.exit(f"different vertex counts: {len(a)} and {len(b)}")
-    diff = np.abs(a - b).max(axis=1) if len(a) else np.zeros(0)
-    print(f"vertices {len(a)}, differing {int((diff > 0).sum())}, largest difference "
-          f"{diff.max() if len(diff) else 0:.3g}, differing by more than 1e-3 {int((diff > 1e-3).sum())}")
+    diff = [max(abs(x - y) for x, y in zip(ca, cb)) for ca, cb in zip(a, b)]
+    print(f"vertices {len(a)}, differing {sum(d > 0 for d in diff)}, largest difference "
+          f"{max(diff, default=0):.3g}, differing by more than 1e-3 {sum(d > 1e-3 for d in diff)}")
 
 
 if __name__ == "__main__":

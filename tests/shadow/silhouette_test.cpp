@@ -212,60 +212,71 @@ TEST_CASE("silhouettes: pieces merged along chains cover what the trapezoids cov
   // edges, seen from tilted floor points, with the light's horizon cut. The same answer, the same
   // diffuse (eq. 9 over the pieces) and area, simple counter-clockwise pieces within the size
   // limit, and far fewer of them.
-  const PreparedLight<double> light = prepare_light<double>(area_source(square_light(1, 3)));
-  const PreparedAreaLight<double>& panel = area_of(light);
+  // Also from behind a two-sided light (the scene mirrored across its plane), where the pieces
+  // turn the other way in the view's frame, as the light does.
   std::mt19937_64 rng(2027);
   std::uniform_real_distribution<double> u(-1.2, 1.2), tilt(-0.6, 0.6);
   long compared = 0, trapezoids = 0, chains = 0, largest = 0;
   double diffuse = 0, area = 0;
-  for (int levels : {1, 2, 3, 4}) {
-    const OccluderBvh bvh = make_bvh(icosphere({0.1, -0.05, 1.4}, 0.55, levels));
-    for (int k = 0; k < 40; ++k) {
-      const ShadingPoint<double> sp = make_shading_point(Vec3d{u(rng), u(rng), 0}, normalize(Vec3d{tilt(rng), tilt(rng), 1}),
-                                                         Vec3d{0, 0, 4}, 8.0);
-      const AreaView<double> view = make_area_view(panel, sp.p);
-      ClipPolygon<double> horizon;
-      clip_to_horizon(panel, view, sp.n, horizon);
-      if (!view.lit || horizon.count < 3) continue;
-      AreaSilhouetteScratch by_trapezoids, by_chains;
-      const SilhouetteVisibility a = visible_area_by_silhouettes(panel, view, horizon, sp.p, bvh, by_trapezoids, nullptr,
-                                                                 SilhouettePieces::kTrapezoids);
-      const SilhouetteVisibility b = visible_area_by_silhouettes(panel, view, horizon, sp.p, bvh, by_chains, nullptr,
-                                                                 SilhouettePieces::kChains);
-      REQUIRE(a == b);
-      if (a != SilhouetteVisibility::kPieces) continue;
-      ++compared;
-      trapezoids += static_cast<long>(by_trapezoids.pieces.size());
-      chains += static_cast<long>(by_chains.pieces.size());
-      const double open = area_diffuse_contour(panel, view, horizon, sp.n);
-      double diffuse_a = 0, diffuse_b = 0, area_a = 0, area_b = 0;
-      ClipPolygon<double> piece;
-      auto load = [&](const LightPieces& pieces, std::size_t i) -> const ClipPolygon<double>& {
-        piece.count = pieces.start[i + 1] - pieces.start[i];
-        std::copy(pieces.points.begin() + pieces.start[i], pieces.points.begin() + pieces.start[i + 1], piece.d.begin());
-        return piece;
-      };
-      for (std::size_t i = 0; i < by_trapezoids.pieces.size(); ++i) {
-        diffuse_a += area_diffuse_contour(panel, view, load(by_trapezoids.pieces, i), sp.n);
-        area_a += signed_twice_area(piece_uv(by_trapezoids.pieces, i, view));
+  for (bool behind : {false, true}) {
+    const PreparedLight<double> light = prepare_light<double>(area_source(square_light(1, 3), behind));
+    const PreparedAreaLight<double>& panel = area_of(light);
+    const double side = behind ? -1 : 1;  // z -> 3 - side (3 - z) mirrors the scene behind the light
+    auto at_z = [&](double z) { return 3 - side * (3 - z); };
+    for (int levels : {1, 2, 3, 4}) {
+      const OccluderBvh bvh = make_bvh(icosphere({0.1, -0.05, at_z(1.4)}, 0.55, levels));
+      for (int k = 0; k < 40; ++k) {
+        const ShadingPoint<double> sp = make_shading_point(Vec3d{u(rng), u(rng), at_z(0)},
+                                                           normalize(Vec3d{tilt(rng), tilt(rng), side}),
+                                                           Vec3d{0, 0, at_z(4)}, 8.0);
+        const AreaView<double> view = make_area_view(panel, sp.p);
+        ClipPolygon<double> horizon;
+        clip_to_horizon(panel, view, sp.n, horizon);
+        if (!view.lit || horizon.count < 3) continue;
+        AreaSilhouetteScratch by_trapezoids, by_chains;
+        const SilhouetteVisibility a = visible_area_by_silhouettes(panel, view, horizon, sp.p, bvh, by_trapezoids,
+                                                                   nullptr, SilhouettePieces::kTrapezoids);
+        const SilhouetteVisibility b = visible_area_by_silhouettes(panel, view, horizon, sp.p, bvh, by_chains, nullptr,
+                                                                   SilhouettePieces::kChains);
+        REQUIRE(a == b);
+        if (a != SilhouetteVisibility::kPieces) continue;
+        ++compared;
+        trapezoids += static_cast<long>(by_trapezoids.pieces.size());
+        chains += static_cast<long>(by_chains.pieces.size());
+        // The light's own turn in the view's frame: every piece turns the same way.
+        std::vector<std::pair<double, double>> light_uv;
+        for (int i = 0; i < horizon.count; ++i) light_uv.push_back({dot(view.u, horizon.d[i]), dot(view.v, horizon.d[i])});
+        const double turn = signed_twice_area(light_uv) > 0 ? 1 : -1;
+        const double open = area_diffuse_contour(panel, view, horizon, sp.n);
+        double diffuse_a = 0, diffuse_b = 0, area_a = 0, area_b = 0;
+        ClipPolygon<double> piece;
+        auto load = [&](const LightPieces& pieces, std::size_t i) -> const ClipPolygon<double>& {
+          piece.count = pieces.start[i + 1] - pieces.start[i];
+          std::copy(pieces.points.begin() + pieces.start[i], pieces.points.begin() + pieces.start[i + 1], piece.d.begin());
+          return piece;
+        };
+        for (std::size_t i = 0; i < by_trapezoids.pieces.size(); ++i) {
+          diffuse_a += area_diffuse_contour(panel, view, load(by_trapezoids.pieces, i), sp.n);
+          area_a += turn * signed_twice_area(piece_uv(by_trapezoids.pieces, i, view));
+        }
+        for (std::size_t i = 0; i < by_chains.pieces.size(); ++i) {
+          diffuse_b += area_diffuse_contour(panel, view, load(by_chains.pieces, i), sp.n);
+          const std::vector<std::pair<double, double>> uv = piece_uv(by_chains.pieces, i, view);
+          area_b += turn * signed_twice_area(uv);
+          largest = std::max(largest, static_cast<long>(uv.size()));
+          INFO((behind ? "behind" : "in front") << ", level " << levels << ", point " << k << ", piece " << i);
+          CHECK(uv.size() <= static_cast<std::size_t>(kMaxChainPiece + 4));
+          CHECK(turn * signed_twice_area(uv) > 0);
+          CHECK(simple_polygon(uv));
+        }
+        diffuse = std::max(diffuse, std::abs(diffuse_a - diffuse_b) / open);
+        area = std::max(area, std::abs(area_a - area_b) / (2 * panel.area));
       }
-      for (std::size_t i = 0; i < by_chains.pieces.size(); ++i) {
-        diffuse_b += area_diffuse_contour(panel, view, load(by_chains.pieces, i), sp.n);
-        const std::vector<std::pair<double, double>> uv = piece_uv(by_chains.pieces, i, view);
-        area_b += signed_twice_area(uv);
-        largest = std::max(largest, static_cast<long>(uv.size()));
-        INFO("level " << levels << ", point " << k << ", piece " << i);
-        CHECK(uv.size() <= static_cast<std::size_t>(kMaxChainPiece + 4));
-        CHECK(signed_twice_area(uv) > 0);
-        CHECK(simple_polygon(uv));
-      }
-      diffuse = std::max(diffuse, std::abs(diffuse_a - diffuse_b) / open);
-      area = std::max(area, std::abs(area_a - area_b) / (2 * panel.area));
     }
   }
   MESSAGE("chains: " << compared << " partly hidden points, " << trapezoids << " trapezoids, " << chains
                      << " chain pieces (largest " << largest << " corners); diffuse " << diffuse << ", area " << area);
-  CHECK(compared >= 60);
+  CHECK(compared >= 120);
   CHECK(diffuse <= 1e-12);
   CHECK(area <= 1e-12);
   CHECK(3 * chains < trapezoids);
@@ -280,6 +291,8 @@ TEST_CASE("silhouettes: pieces merged along chains cover what the trapezoids cov
   // project to the same bits): the visible part's left side passes from one to the other there,
   // but along that line, not at one point. A piece must not continue from the first's side to the
   // second's.
+  const PreparedLight<double> light = prepare_light<double>(area_source(square_light(1, 3)));
+  const PreparedAreaLight<double>& panel = area_of(light);
   const SweepAxes axes = sweep_axes(panel);
   auto at = [&](double a, double b) { return axes.u * a + axes.v * b + Vec3d{0, 0, 1.5}; };
   const OccluderBvh steps = make_bvh({{at(-0.3, -0.4), at(0.1, -0.15), at(0.1, 0)}, {at(-0.1, 0), at(-0.1, 0.4), at(-0.5, 0.4)}});

@@ -645,12 +645,14 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
       if (t < 0) return ++s.undecided, SilhouetteVisibility::kUndecided;
       if (t == 0 && i + 1 < n) {
         const int a = sorted[i].second, b = sorted[i + 1].second;
-        Open o{a, b, lo, u_at(seg[a], lo), u_at(seg[b], lo)};
         const int j = open_at[a];
-        if (j >= 0 && open[j].b == b) {
-          o = open[j];
+        if (j >= 0 && open[j].b == b) {  // the same two segments: the piece below grows on
+          now.push_back(open[j]);
           continued[j] = 1;
-        } else if (cut == SilhouettePieces::kChains && o.a0 < o.b0) {
+          continue;
+        }
+        Open o{a, b, lo, u_at(seg[a], lo), u_at(seg[b], lo)};  // a new piece, unless a chain continues
+        if (cut == SilhouettePieces::kChains && o.a0 < o.b0) {
           // A piece below whose bounding segments are a and b or end where they start: it
           // grows on, with a vertex where a side turns from one segment to the next.
           for (std::size_t k = 0; k < open.size(); ++k) {

@@ -24,6 +24,11 @@ SpecularOptions effective_specular(const ShadeOptions& options) {
   return s;
 }
 
+// silhouette_pieces_for with the specular method already made effective.
+SilhouettePieces silhouette_pieces(SpecularMethod method, bool disk, bool wedged) {
+  return method == SpecularMethod::kNone && !disk && !wedged ? SilhouettePieces::kChains : SilhouettePieces::kTrapezoids;
+}
+
 // The linear neighbourhood specular (linear_specular_neighborhood.h) of a partly hidden light:
 // the same K samples as for the whole light (window around its peak), each lobe value counted
 // only if its point of the segment is visible. Never more than the unshadowed value, equal to it
@@ -129,7 +134,7 @@ Response<double> shade_area_shadowed(const PreparedAreaLight<double>& light, con
     else visible = &seen->pieces;
   } else if (options.area_shadows == AreaShadowMethod::kSilhouette) {
     switch (visible_area_by_silhouettes(light, view, horizon, sp.p, occluders, silhouette, cluster,
-                                        silhouette_pieces_for(options, disk != nullptr, !wedges.empty()))) {
+                                        silhouette_pieces(spec.method, disk != nullptr, !wedges.empty()))) {
       case SilhouetteVisibility::kUnoccluded: nothing_reaches = true; break;
       case SilhouetteVisibility::kPieces: visible = &silhouette.pieces; break;
       case SilhouetteVisibility::kUndecided: break;
@@ -239,8 +244,7 @@ double directional_reach(const OccluderBvh& occluders, const Vec3d& p) {
 }  // namespace
 
 SilhouettePieces silhouette_pieces_for(const ShadeOptions& options, bool disk, bool wedged) {
-  return effective_specular(options).method == SpecularMethod::kNone && !disk && !wedged ? SilhouettePieces::kChains
-                                                                                         : SilhouettePieces::kTrapezoids;
+  return silhouette_pieces(effective_specular(options).method, disk, wedged);
 }
 
 void see_light_above_horizon(const PreparedAreaLight<double>& polygon, const ShadingPoint<double>& sp,

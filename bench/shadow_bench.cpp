@@ -25,6 +25,8 @@
 //    intervals, linear_visibility.h).
 //    --repeat N: each silhouette loop of part 3 runs N times and the fastest run is reported (a
 //    busy machine only adds time; the results are the same bits every time).
+//    --min-triangles N: only the rows of at least about N triangles (to profile the large ones,
+//    e.g. `perf record shadow_bench --only 3 --no-cuts --min-triangles 1000000 --repeat 12`).
 // --quick: small sizes only (a few seconds; ctest shadow_bench_quick checks that it runs).
 #include <algorithm>
 #include <chrono>
@@ -318,7 +320,7 @@ double fastest_seconds(int repeat, const Loop& loop) {
   return best;
 }
 
-void scaling(bool quick, int repeat) {
+void scaling(bool quick, int repeat, std::size_t min_triangles) {
   omp_set_num_threads(1);  // per-vertex costs of one thread, the clustered loop included
   LightSource l;
   l.type = LightType::kArea;
@@ -350,6 +352,7 @@ void scaling(bool quick, int repeat) {
     cut_options.area_shadows = AreaShadowMethod::kTriangleCuts;
     for (std::size_t n : {100ul, 1000ul, 10000ul, 100000ul, 1000000ul}) {
       if (quick && n > 1000) break;
+      if (n < min_triangles) continue;
       const std::vector<Tri> tris = series == 0 ? field(n, 42) : sphere(n);
       auto t = Clock::now();
       // The sphere is one closed primitive: its back faces are skipped (occluder_triangles.h).
@@ -410,6 +413,7 @@ void scaling(bool quick, int repeat) {
 int main(int argc, char** argv) {
   bool quick = false, with_cuts = true;
   int only = 0, repeat = 1;
+  std::size_t min_triangles = 0;  // part 3 leaves out the smaller rows (to profile the large ones)
   std::vector<int> cluster_sizes;
   std::string scene = "assets/paper/bowling.glb", lights = "assets/paper/bowling-area.json";
   for (int i = 1; i < argc; ++i) {
@@ -423,6 +427,14 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "shadow_bench: --repeat wants a positive integer\n");
         return 2;
       }
+    }
+    else if (a == "--min-triangles" && i + 1 < argc) {
+      const long value = std::atol(argv[++i]);
+      if (value < 1) {
+        std::fprintf(stderr, "shadow_bench: --min-triangles wants a positive integer\n");
+        return 2;
+      }
+      min_triangles = static_cast<std::size_t>(value);
     }
     else if (a == "--scene" && i + 1 < argc) scene = argv[++i];
     else if (a == "--lights" && i + 1 < argc) lights = argv[++i];
@@ -438,13 +450,13 @@ int main(int argc, char** argv) {
       }
     } else {
       std::fprintf(stderr, "usage: shadow_bench [--quick] [--only 1|2|3] [--scene FILE --lights LIGHTS.json] [--no-cuts] "
-                           "[--cluster-sizes N,N,...] [--repeat N]\n");
+                           "[--cluster-sizes N,N,...] [--repeat N] [--min-triangles N]\n");
       return 2;
     }
   }
   try {
     if (only == 0 || only == 1 || only == 2) vlit::bench::bowling(scene, lights, quick, only != 2, only != 1, with_cuts, cluster_sizes);
-    if (only == 0 || only == 3) vlit::bench::scaling(quick, repeat);
+    if (only == 0 || only == 3) vlit::bench::scaling(quick, repeat, min_triangles);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "shadow_bench: %s\n", e.what());
     return 1;

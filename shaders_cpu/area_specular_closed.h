@@ -63,6 +63,12 @@ inline constexpr int kAreaClosedMaxShininess = 100000;
 // The dispatch (area_light.h) uses this form up to here only: its O(m) recurrence costs more than the
 // adaptive form above (bench/area_light_bench.cpp; at m = 1e4 ~10x more).
 inline constexpr int kAreaClosedDispatchMaxShininess = 1000;
+// Above kAreaTailDispatchMaxShininess the dispatch tries this form only where max(0, Rv.w)^m
+// reaches at least this on the light (1 / kAreaClosedMaxCancellation): where the lobe's peak on
+// the light is lower, the result is a tail well below the edge terms, and the form refuses most
+// such cases (tests/kernels/area/area_specular_closed_test.cpp counts them) after its O(m)
+// recurrence. `./build/release/bench/area_light_bench --closed-by-m [--tails]`, docs/area-lights.md.
+inline constexpr double kAreaClosedDispatchMinPeakLobe = 1.0 / kAreaClosedMaxCancellation;
 
 // One edge d_i -> d_j of the clipped polygon as the per-edge recurrences see it (this file and
 // area_specular_closed_real.h): with a = D + d_i, b = D + d_j and the edge's pole

@@ -86,6 +86,56 @@ TEST_CASE("closed-form area specular: random configurations with m in [1e3, 1e4]
   CHECK(accepted > 0);
 }
 
+TEST_CASE("closed-form area specular: the dispatch skips it above the tail form's range where the lobe misses the light") {
+  // For integer m in (kAreaTailDispatchMaxShininess, kAreaClosedDispatchMaxShininess] the dispatch
+  // (area_light.h) tries the closed form only where the lobe's largest value on the light is at
+  // least kAreaClosedDispatchMinPeakLobe; the other cases go to the adaptive form. Both must give
+  // the same value: the dispatch's result is compared with the adaptive form at tolerance 1e-13
+  // on every case, and with the closed form wherever that accepts a skipped case. The closed
+  // form must refuse nearly all of the skipped cases (what the skip is for).
+  int skipped = 0, skipped_closed_accepts = 0;
+  double worst_vs_closed = 0, worst_vs_adaptive = 0;
+  for (uint64_t seed = 9001; seed <= 9600; ++seed) {
+    const RandomAreaCase c = random_area_case(seed, kAreaTailDispatchMaxShininess + 1, kAreaClosedDispatchMaxShininess, 4.0);
+    const PreparedAreaLight<double> pl = prepare_area_light(light_of(c.poly));
+    const AreaView<double> view = make_area_view(pl, c.sp.p);
+    if (!view.lit) continue;
+    ClipPolygon<double> visible;
+    clip_to_horizon(pl, view, c.sp.n, visible);
+    if (visible.count < 3) continue;
+    const double m = c.sp.shininess;
+    REQUIRE(m > kAreaTailDispatchMaxShininess);
+    REQUIRE(m <= kAreaClosedDispatchMaxShininess);
+    const double dispatched = area_specular_exact_dispatch(visible, view, c.sp.rv, m, 1e-9);
+    const double adaptive = area_specular_exact(visible, view, c.sp.rv, m, 1e-13);
+    const AreaSpecularClosed<double> closed = area_specular_closed(visible, view, c.sp.rv, int(m));
+    INFO("seed=", seed, " ", describe(c.poly, c.sp));
+    INFO("dispatch=", dispatched, " adaptive=", adaptive, " closed=", closed.value, " accepted=", closed.accepted);
+    CHECK(std::isfinite(dispatched));
+    // the adaptive form's own target at tol = 1e-9: an error of tol times the value, or of tol
+    // eps 2 pi / (m + 1) (area_specular_exact.h), so differences are relative to the larger of
+    // the value and eps 2 pi / (m + 1)
+    const double scale = std::numeric_limits<double>::epsilon() * 2 * M_PI / (m + 1);
+    const double vs_adaptive = std::abs(dispatched - adaptive) / std::max(adaptive, scale);
+    CHECK(vs_adaptive <= 1e-9);
+    worst_vs_adaptive = std::max(worst_vs_adaptive, vs_adaptive);
+    const double peak_lobe = phong_lobe_from_angle(area_specular_peak_direction(visible, view, normalize(c.sp.rv)).angle, m);
+    if (peak_lobe >= kAreaClosedDispatchMinPeakLobe) continue;
+    ++skipped;
+    if (!closed.accepted || closed.value == 0) continue;  // (0: nothing of the light in the lobe's half-space)
+    ++skipped_closed_accepts;
+    const double vs_closed = std::abs(dispatched - closed.value) / std::max(closed.value, scale);
+    CHECK(vs_closed <= 1e-9);
+    worst_vs_closed = std::max(worst_vs_closed, vs_closed);
+  }
+  MESSAGE("dispatch above m = ", kAreaTailDispatchMaxShininess, ": the closed form skipped in ", skipped,
+          " of 600 cases, of which it would accept ", skipped_closed_accepts,
+          "; max rel. diff of the dispatch vs the closed form there ", worst_vs_closed,
+          ", vs the adaptive form (tol 1e-13) on all ", worst_vs_adaptive);
+  CHECK(skipped >= 300);
+  CHECK(skipped_closed_accepts * 20 <= skipped);  // measured: 0 of 356
+}
+
 TEST_CASE("closed-form area specular: where the edge sums cancel it is refused") {
   // Rv 0.3 rad outside a unit square at distance 1: the result is a tail ~ cos^m(0.3) while each
   // edge term is ~ 1 / sqrt(m); the forced closed form loses digits as m grows and is refused.

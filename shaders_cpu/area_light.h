@@ -43,9 +43,10 @@ namespace vlit {
 // integer m <= kAreaClosedDispatchMaxShininess where its
 // rounding bound holds (area_specular_closed.h; above that m its O(m) recurrence is slower than
 // the adaptive form), above kAreaTailDispatchMaxShininess only where the lobe's largest value on
-// the light is at least kAreaClosedDispatchMinPeakLobe (elsewhere the result is a tail whose edge
-// terms cancel, which the closed form mostly refuses at that m after an O(m) recurrence that
-// costs more than the adaptive form); else, where Rv misses the light, the tail form within its bound and step
+// the light is at least kAreaClosedDispatchMinPeakLobe (area_lobe_reaches: some direction toward
+// the light within acos(that^(1/m)) of Rv; elsewhere the result is a tail whose edge terms
+// cancel, which the closed form mostly refuses at that m after an O(m) recurrence that costs more
+// than the adaptive form); else, where Rv misses the light, the tail form within its bound and step
 // budget (area_specular_tail.h, integer or real m); else the adaptive contour form
 // (area_specular_exact.h). Tried in that order: where both closed forms accept, the first is
 // the cheaper. The tail form only up to kAreaTailDispatchMaxShininess: above it the adaptive form,
@@ -66,8 +67,7 @@ R area_specular_exact_dispatch(const ClipPolygon<R>& visible, const AreaView<R>&
   }
   if (m == std::floor(m) && m >= R(0) && m <= R(kAreaClosedDispatchMaxShininess) &&
       (m <= R(kAreaTailDispatchMaxShininess) ||
-       phong_lobe_from_angle(area_specular_peak_direction(visible, view, normalize(rv)).angle, m) >=
-           R(kAreaClosedDispatchMinPeakLobe))) {
+       area_lobe_reaches(visible, view, normalize(rv), std::pow(R(kAreaClosedDispatchMinPeakLobe), R(1) / m)))) {
     const AreaSpecularClosed<R> c = area_specular_closed(visible, view, rv, int(m));
     if (c.accepted) return c.value;
   }

@@ -80,6 +80,34 @@ AreaPeak<R> area_specular_peak_direction(const ClipPolygon<R>& poly, const AreaV
   return peak;
 }
 
+// Whether some direction toward the (clipped) light lies within the angle acos(cos_min) of the
+// unit rv, 0 < cos_min < 1: whether the peak's angle above is at most that, by the same boundary
+// search with cosines and sines instead of angles (no atan2): a vertex direction a with
+// Rv.a >= cos_min |a|, or an edge whose great circle passes within that angle (|Rv.n_i| <=
+// sin) at a point between its ends. The exact specular's dispatch (area_light.h) asks it.
+template <class R>
+bool area_lobe_reaches(const ClipPolygon<R>& poly, const AreaView<R>& view, const Vec3<R>& rv, R cos_min) {
+  if (!view.lit || poly.count < 3) return false;
+  if (ray_hits_polygon(poly, view, rv)) return true;
+  const R sin_max = std::sqrt((R(1) - cos_min) * (R(1) + cos_min));
+  for (int i = 0; i < poly.count; ++i) {
+    const Vec3<R>& di = poly.d[i];
+    const Vec3<R>& dj = poly.d[(i + 1) % poly.count];
+    const Vec3<R> a = view.D + di;
+    if (dot(rv, a) >= cos_min * length(a)) return true;
+    const Vec3<R> cr = cross(view.D, dj - di) + cross(di, dj);  // a x b
+    const R s = length(cr);
+    if (!(s > R(0))) continue;
+    const Vec3<R> pole = cr / s;
+    const R rv_n = dot(rv, pole);
+    if (!(std::abs(rv_n) <= sin_max)) continue;
+    const Vec3<R> w = rv - pole * rv_n;
+    const Vec3<R> b = view.D + dj;
+    if (dot(cross(a, w), pole) >= R(0) && dot(cross(w, b), pole) >= R(0)) return true;
+  }
+  return false;
+}
+
 // Is(peak) for a prepared light (see file comment).
 template <class R>
 R area_specular_peak(const ClipPolygon<R>& poly, const AreaView<R>& view, const Vec3<R>& rv,

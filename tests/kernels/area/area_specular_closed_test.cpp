@@ -119,8 +119,11 @@ TEST_CASE("closed-form area specular: the dispatch skips it above the tail form'
     const double vs_adaptive = std::abs(dispatched - adaptive) / std::max(adaptive, scale);
     CHECK(vs_adaptive <= 1e-9);
     worst_vs_adaptive = std::max(worst_vs_adaptive, vs_adaptive);
+    // The dispatch's test, and the peak's angle it stands for (area_specular_peak.h)
+    const bool reaches = area_lobe_reaches(visible, view, normalize(c.sp.rv), std::pow(kAreaClosedDispatchMinPeakLobe, 1 / m));
     const double peak_lobe = phong_lobe_from_angle(area_specular_peak_direction(visible, view, normalize(c.sp.rv)).angle, m);
-    if (peak_lobe >= kAreaClosedDispatchMinPeakLobe) continue;
+    if (std::abs(peak_lobe / kAreaClosedDispatchMinPeakLobe - 1) > 1e-9) CHECK(reaches == (peak_lobe >= kAreaClosedDispatchMinPeakLobe));
+    if (reaches) continue;
     ++skipped;
     if (!closed.accepted || closed.value == 0) continue;  // (0: nothing of the light in the lobe's half-space)
     ++skipped_closed_accepts;

@@ -25,7 +25,11 @@
 //     1 - c = |Rv x x|^2 / (|x| (|x| + Rv.x)), no cancellation near the peak.
 //     When Rv is outside the visible light the "1" part sums to 0 exactly (winding number 0) and
 //     only the tail is integrated: Is = orient Σ_i Rv.(a_i x b_i) / (m + 1) ∫ c^{m+1} / |Rv x x|^2 dt
-//     (no cancellation of terms ~ 1 / (m + 1) down to a tiny value).
+//     (no cancellation of terms ~ 1 / (m + 1) down to a tiny value). Rv inside the light, more
+//     than a lobe width from every edge's great circle: the "1" part sums to 2 pi k (k turns
+//     about Rv) and Is = -orient 2 pi k / (m + 1) + orient Σ_i Rv.(a_i x b_i) / (m + 1) ∫ c^{m+1} /
+//     |Rv x x|^2 dt, the lobe outside the light integrated as a tail to the absolute accuracy
+//     tol 2 pi k / (m + 1) (docs/area-lights.md "Rv inside the light").
 //  3. globally adaptive Gauss-Kronrod (7/15 points, adaptive_kronrod.h) over all edges: each edge starts split at the
 //     point closest to P (the 1/|x|^2 peak, width ~ its distance d_P: graded cuts at d_P 4^k) and at
 //     the point closest in angle to Rv (the lobe, width ~ |x| / sqrt(m + 1): graded likewise);
@@ -130,7 +134,30 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   // Only when Rv is at least a lobe width away from the light: closer, the tail's integrand
   // c^{m+1} / |Rv x x|^2 has a peak of height 1 / angle^2 and the full form is the better one.
   const R peak_angle = shininess > R(0) ? area_specular_peak_direction(*poly, view, rv).angle : R(0);
-  const bool tail = peak_angle > lobe_width;
+  // Rv inside the light, at least a lobe width from every edge's great circle: the "1" parts sum
+  // to 2 pi k / (m + 1) (k the number of turns the boundary makes about Rv, counted from the
+  // edges' azimuths), and Is = -orient 2 pi k / (m + 1) + orient Σ w_i ∫ c^{m+1} / |Rv x x|^2 dt:
+  // the integrated part is the lobe outside the light, a correction that needs only the
+  // absolute accuracy tol Is, so the tail form's deferred pieces apply (those the lobe does not
+  // reach are never evaluated).
+  int turns = 0;
+  if (shininess > R(0) && bounded_tails && !(peak_angle > R(0))) {
+    R azimuth = 0, nearest = R(1);  // Σ of the edges' azimuths about Rv; least sin of the angle to a great circle
+    for (int i = 0; i < n; ++i) {
+      const Vec3<R> a = view.D + poly->d[i], b = view.D + poly->d[(i + 1) % n];
+      const Vec3<R> cr = edge_cross(view.D, poly->d[i], poly->d[(i + 1) % n]);
+      const R len = length(cr);
+      if (!(len > R(0))) continue;
+      nearest = std::min(nearest, std::abs(dot(rv, cr)) / len);
+      azimuth += std::atan2(dot(rv, cr), dot(a, b) - dot(rv, a) * dot(rv, b));
+    }
+    const R k = std::round(azimuth / R(2 * M_PI));
+    // sin(lobe width) < nearest: every great circle farther than a lobe width
+    if (k != R(0) && nearest > std::sin(std::min(lobe_width, R(1.5))) && std::abs(azimuth - k * R(2 * M_PI)) < R(1e-3))
+      turns = int(k);
+  }
+  const bool inside_tail = turns != 0;
+  const bool tail = peak_angle > lobe_width || inside_tail;
   // Absolute error target: tol eps 2 pi / (m + 1), tol times the rounding of the largest value Is
   // takes at this m (2 pi / (m + 1), a light covering the half-space around Rv). Values below it
   // are astronomically small tails whose edge terms can cancel: relative accuracy there cost many
@@ -138,7 +165,11 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   const R floor = tolerance * std::numeric_limits<R>::epsilon() * R(2 * M_PI) / (shininess + R(1));
   // Is <= c_max^m Omega <= c_max^m 2 pi (c <= c_max = cos(peak angle) on the light, whose solid
   // angle is at most 2 pi): below the floor, 0 is within it.
-  if (tail && bounded_tails && phong_lobe_from_angle(peak_angle, shininess) * R(2 * M_PI) <= floor) return R(0);
+  if (tail && !inside_tail && bounded_tails && phong_lobe_from_angle(peak_angle, shininess) * R(2 * M_PI) <= floor)
+    return R(0);
+  // The "1" parts' sum, -orient 2 pi k / (m + 1) (area_specular_exact.h's sign: the full form is
+  // Is = -orient Σ w_i ∫ (1 - c^{m+1}) / |Rv x x|^2 dt).
+  const R whole = inside_tail ? -view.orient * R(2 * M_PI) * R(turns) / (shininess + R(1)) : R(0);
 
   // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.
   std::array<EdgeIntegrand<R>, kMaxClipVertices> edge{};
@@ -200,9 +231,11 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
     quad.template add_graded<kExactMaxCuts>(edge[i], i, R(0), R(1), centers, widths, 2, w, bound);
   }
 
-  // 3. Global adaptivity: bisect the piece with the largest error estimate.
-  const R value = quad.refine([&](int i, R t) { return edge[i](t); }, [&](int i) { return weight[i]; }, tolerance,
-                              bounded_tails ? floor : R(0));
+  // 3. Global adaptivity: bisect the piece with the largest error estimate. Inside, the target is
+  // absolute: tol times the whole lobe's part, of which the integrated correction is a fraction.
+  const R target = inside_tail ? tolerance * std::abs(whole) : (bounded_tails ? floor : R(0));
+  const R value = quad.refine([&](int i, R t) { return edge[i](t); }, [&](int i) { return weight[i]; }, tolerance, target);
+  if (inside_tail) return std::max(whole + view.orient * value, R(0));
   if (tail) return std::max(view.orient * value, R(0));  // Is = orient Σ w_i ∫ c^{m+1} / |Rv x x|^2
   return std::max(-view.orient * value, R(0));
 }

@@ -416,6 +416,78 @@ TEST_CASE("area specular exact: lobe tails, deferred pieces vs every piece evalu
           ", vs the area quadrature (m <= 1e3) ", worst_ref);
 }
 
+TEST_CASE("area specular exact: Rv inside the light, the lobe outside it integrated as a correction") {
+  // With Rv inside the light and every edge's great circle more than a lobe width away, the
+  // adaptive form takes the whole lobe's part 2 pi k / (m + 1) exactly and integrates only the lobe
+  // outside the light, as deferred tail pieces (area_specular_exact.h). Against the full form with
+  // every piece evaluated (bounded_tails = false, which keeps the full contour form inside), at
+  // loose tolerances, and against the area quadrature.
+  const Vec3d up{0, 0, 1};
+  const auto poly = square_down(1, 1);
+  double worst_eager = 0, worst_ref = 0;
+  int cases = 0;
+  for (double m : {300.0, 1e3, 3e3, 1e4}) {
+    const double lobe = 1 / std::sqrt(m + 1);
+    for (const double k : {1.5, 3.0, 8.0}) {
+      for (const bool corner : {false, true}) {
+        // Rv k lobe widths inside the edge x = 1 (or the corner (1, 1)), seen from P = 0 at z = 1
+        const double inside = (corner ? std::atan(std::sqrt(2.0)) : M_PI / 4) - k * lobe;
+        const Vec3d toward = corner ? normalize(Vec3d{1, 1, 0}) : normalize(Vec3d{1, 0.05, 0});
+        const ShadingPoint<double> sp{{0, 0, 0}, up, normalize(toward * std::sin(inside) + up * std::cos(inside)), m};
+        const PreparedAreaLight<double> light = prepare_area_light(light_of(poly));
+        const AreaView<double> view = make_area_view(light, sp.p);
+        ClipPolygon<double> visible;
+        clip_to_horizon(light, view, sp.n, visible);
+        const double deferred = area_specular_exact(visible, view, sp.rv, m, 1e-9);
+        const double eager = area_specular_exact(visible, view, sp.rv, m, 1e-13, false);
+        INFO("m=", m, " k=", k, std::string(corner ? " corner" : " edge"), ": deferred=", deferred, " eager=", eager);
+        REQUIRE(eager > 0);
+        const double rel = std::abs(deferred - eager) / eager;
+        CHECK(rel <= 2e-9);
+        worst_eager = std::max(worst_eager, rel);
+        for (const double tol : {1e-2, 1e-4, 1e-6}) {
+          const double loose = area_specular_exact(visible, view, sp.rv, m, tol);
+          INFO("tolerance ", tol, ": ", loose);
+          CHECK(std::abs(loose - eager) <= tol / 100 * eager);  // as for the tails: deferred pieces charged 1000x
+        }
+        ++cases;
+        if (m <= 1e3) {
+          const double ref = reference_specular({poly}, sp, false, 1e-11L);
+          const double rel_ref = std::abs(deferred - ref) / ref;
+          INFO("reference=", ref);
+          CHECK(rel_ref <= 1e-9);
+          worst_ref = std::max(worst_ref, rel_ref);
+        }
+      }
+    }
+  }
+  // Random convex polygons with Rv inside (aimed within 0.3 sizes of the centre), m log-uniform
+  // in [30, 1e4], integer and real alternately.
+  double worst_random = 0;
+  int random_cases = 0;
+  for (uint64_t seed = 501; seed <= 800; ++seed) {
+    const RandomAreaCase c = random_area_case(seed, 30, 1e4, 0.3, seed % 2 == 0);
+    const PreparedAreaLight<double> light = prepare_area_light(light_of(c.poly));
+    const AreaView<double> view = make_area_view(light, c.sp.p);
+    if (!view.lit) continue;
+    ClipPolygon<double> visible;
+    clip_to_horizon(light, view, c.sp.n, visible);
+    if (visible.count < 3 || !ray_hits_polygon(visible, view, normalize(c.sp.rv))) continue;
+    const double m = c.sp.shininess;
+    const double eager = area_specular_exact(visible, view, c.sp.rv, m, 1e-13, false);
+    const double deferred = area_specular_exact(visible, view, c.sp.rv, m, 1e-9);
+    INFO("seed ", seed, " ", describe(c.poly, c.sp), ": eager ", eager, " deferred ", deferred);
+    REQUIRE(eager > 0);
+    const double rel = std::abs(deferred - eager) / eager;
+    CHECK(rel <= 2e-9);
+    worst_random = std::max(worst_random, rel);
+    ++random_cases;
+  }
+  MESSAGE("area exact specular, Rv inside: ", cases, " named cases, deferred vs eager max rel.diff ", worst_eager,
+          ", vs the area quadrature (m <= 1e3) ", worst_ref, "; ", random_cases, " random cases, max rel.diff ", worst_random);
+  CHECK(random_cases >= 100);
+}
+
 // m -> 0 continuity: the lobe at m = 0 is the limit m -> 0+, [Rv.w > 0] (core/robust_math.h), so the
 // exact specular at m = 0 is the solid angle of the part of the light in front of the lobe's
 // half-space, and m = 1e-12 gives the same to ~1e-11. Against the area quadrature (which clips to

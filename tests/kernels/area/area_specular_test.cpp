@@ -340,6 +340,29 @@ TEST_CASE("area specular exact: stiff cases") {
 // same integrand) and, up to m = 1e3, against the area quadrature. Rv leaves the square past its
 // edge x = 1 (k lobe widths beyond it) or past its corner (1, 1); at k = 20 the values (~1e-90)
 // are far below the absolute target.
+namespace {
+
+// P at the origin under `poly` (the unit square at z = 1 of the tail tests), Rv at the angle beta
+// from the normal toward the edge x = 1 or the corner (1, 1); the view and the horizon-clipped light.
+struct SquareLobeCase {
+  ShadingPoint<double> sp;
+  AreaView<double> view;
+  ClipPolygon<double> visible;
+};
+
+SquareLobeCase square_lobe_case(const std::vector<Vec3d>& poly, double beta, bool corner, double m) {
+  const Vec3d up{0, 0, 1};
+  const Vec3d toward = corner ? normalize(Vec3d{1, 1, 0}) : normalize(Vec3d{1, 0.05, 0});
+  SquareLobeCase c;
+  c.sp = {{0, 0, 0}, up, normalize(toward * std::sin(beta) + up * std::cos(beta)), m};
+  const PreparedAreaLight<double> light = prepare_area_light(light_of(poly));
+  c.view = make_area_view(light, c.sp.p);
+  clip_to_horizon(light, c.view, c.sp.n, c.visible);
+  return c;
+}
+
+}  // namespace
+
 TEST_CASE("area specular exact: lobe tails, deferred pieces vs every piece evaluated and vs the area quadrature") {
   const Vec3d up{0, 0, 1};
   const auto poly = square_down(1, 1);
@@ -353,12 +376,7 @@ TEST_CASE("area specular exact: lobe tails, deferred pieces vs every piece evalu
       for (const bool corner : {false, true}) {
         const double beta = (corner ? std::atan(std::sqrt(2.0)) : M_PI / 4) + k * lobe;
         if (beta > 1.5) continue;  // Rv near or past P's horizon: P sees no lobe there
-        const Vec3d toward = corner ? normalize(Vec3d{1, 1, 0}) : normalize(Vec3d{1, 0.05, 0});
-        const ShadingPoint<double> sp{{0, 0, 0}, up, normalize(toward * std::sin(beta) + up * std::cos(beta)), m};
-        const PreparedAreaLight<double> light = prepare_area_light(light_of(poly));
-        const AreaView<double> view = make_area_view(light, sp.p);
-        ClipPolygon<double> visible;
-        clip_to_horizon(light, view, sp.n, visible);
+        const auto [sp, view, visible] = square_lobe_case(poly, beta, corner, m);
         const double deferred = area_specular_exact(visible, view, sp.rv, m, 1e-9);
         const double eager = area_specular_exact(visible, view, sp.rv, m, 1e-9, false);
         INFO("m=", m, " k=", k, std::string(corner ? " corner" : " edge"), ": deferred=", deferred, " eager=", eager);
@@ -422,7 +440,6 @@ TEST_CASE("area specular exact: Rv inside the light, the lobe outside it integra
   // outside the light, as deferred tail pieces (area_specular_exact.h). Against the full form with
   // every piece evaluated (bounded_tails = false, which keeps the full contour form inside), at
   // loose tolerances, and against the area quadrature.
-  const Vec3d up{0, 0, 1};
   const auto poly = square_down(1, 1);
   double worst_eager = 0, worst_ref = 0;
   int cases = 0;
@@ -432,12 +449,7 @@ TEST_CASE("area specular exact: Rv inside the light, the lobe outside it integra
       for (const bool corner : {false, true}) {
         // Rv k lobe widths inside the edge x = 1 (or the corner (1, 1)), seen from P = 0 at z = 1
         const double inside = (corner ? std::atan(std::sqrt(2.0)) : M_PI / 4) - k * lobe;
-        const Vec3d toward = corner ? normalize(Vec3d{1, 1, 0}) : normalize(Vec3d{1, 0.05, 0});
-        const ShadingPoint<double> sp{{0, 0, 0}, up, normalize(toward * std::sin(inside) + up * std::cos(inside)), m};
-        const PreparedAreaLight<double> light = prepare_area_light(light_of(poly));
-        const AreaView<double> view = make_area_view(light, sp.p);
-        ClipPolygon<double> visible;
-        clip_to_horizon(light, view, sp.n, visible);
+        const auto [sp, view, visible] = square_lobe_case(poly, inside, corner, m);
         const double deferred = area_specular_exact(visible, view, sp.rv, m, 1e-9);
         const double eager = area_specular_exact(visible, view, sp.rv, m, 1e-13, false);
         INFO("m=", m, " k=", k, std::string(corner ? " corner" : " edge"), ": deferred=", deferred, " eager=", eager);

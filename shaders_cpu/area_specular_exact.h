@@ -167,8 +167,8 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
   // angle is at most 2 pi): below the floor, 0 is within it.
   if (tail && !inside_tail && bounded_tails && phong_lobe_from_angle(peak_angle, shininess) * R(2 * M_PI) <= floor)
     return R(0);
-  // The "1" parts' sum, -orient 2 pi k / (m + 1) (area_specular_exact.h's sign: the full form is
-  // Is = -orient Σ w_i ∫ (1 - c^{m+1}) / |Rv x x|^2 dt).
+  // The "1" parts' sum, -orient 2 pi k / (m + 1), with the sign of the full form below,
+  // Is = -orient Σ w_i ∫ (1 - c^{m+1}) / |Rv x x|^2 dt.
   const R whole = inside_tail ? -view.orient * R(2 * M_PI) * R(turns) / (shininess + R(1)) : R(0);
 
   // Per-edge constants: weight Rv.(a x b) / (m + 1) and the integrand.

@@ -151,6 +151,8 @@ R area_specular_exact(const ClipPolygon<R>& horizon_clipped, const AreaView<R>& 
       nearest = std::min(nearest, std::abs(dot(rv, cr)) / len);
       azimuth += std::atan2(dot(rv, cr), dot(a, b) - dot(rv, a) * dot(rv, b));
     }
+    // k from the edges' own azimuths, so that its sign is that of the full form's "1" parts
+    // (ray_winding_number counts in the light's plane, with the polygon's orientation there)
     const R k = std::round(azimuth / R(2 * M_PI));
     // sin(lobe width) < nearest: every great circle farther than a lobe width
     if (k != R(0) && nearest > std::sin(std::min(lobe_width, R(1.5))) && std::abs(azimuth - k * R(2 * M_PI)) < R(1e-3))

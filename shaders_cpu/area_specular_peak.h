@@ -43,6 +43,33 @@ struct AreaPeak {
   Vec3<R> direction{};   // that direction (unit)
 };
 
+// Edge d_i -> d_j seen from P (a = D + d_i, b = D + d_j): the projection w = Rv - (Rv.n) n of Rv
+// onto the plane of its great circle (unit pole n), and whether w lies on the arc between a and b,
+// where it is the arc's closest direction to Rv, at sin(angle) = |Rv.n| (the arc is shorter than
+// pi: a, b are not antiparallel here). between = false also where the edge has no plane (a x b = 0)
+// or Rv is its pole (w = 0).
+template <class R>
+struct ArcFoot {
+  Vec3<R> w;
+  R rv_n{0};
+  bool between = false;
+};
+
+template <class R>
+ArcFoot<R> arc_foot(const AreaView<R>& view, const Vec3<R>& di, const Vec3<R>& dj, const Vec3<R>& rv) {
+  ArcFoot<R> f;
+  const Vec3<R> cr = cross(view.D, dj - di) + cross(di, dj);  // a x b
+  const R s = length(cr);
+  if (!(s > R(0))) return f;
+  const Vec3<R> pole = cr / s;
+  f.rv_n = dot(rv, pole);
+  f.w = rv - pole * f.rv_n;
+  if (!(length_squared(f.w) > R(0))) return f;
+  const Vec3<R> a = view.D + di, b = view.D + dj;
+  f.between = dot(cross(a, f.w), pole) >= R(0) && dot(cross(f.w, b), pole) >= R(0);
+  return f;
+}
+
 template <class R>
 AreaPeak<R> area_specular_peak_direction(const ClipPolygon<R>& poly, const AreaView<R>& view,
                                          const Vec3<R>& rv) {
@@ -56,24 +83,13 @@ AreaPeak<R> area_specular_peak_direction(const ClipPolygon<R>& poly, const AreaV
   }
   R best = R(4);  // > pi
   for (int i = 0; i < poly.count; ++i) {
-    const Vec3<R>& di = poly.d[i];
-    const Vec3<R>& dj = poly.d[(i + 1) % poly.count];
-    const Vec3<R> a = view.D + di;
-    const Vec3<R> b = view.D + dj;
+    const Vec3<R> a = view.D + poly.d[i];
     const R angle_a = angle_between(rv, a);
     if (angle_a < best) { best = angle_a; peak.direction = normalize(a); }
-    const Vec3<R> cr = cross(view.D, dj - di) + cross(di, dj);  // a x b
-    const R s = length(cr);
-    if (!(s > R(0))) continue;
-    const Vec3<R> pole = cr / s;
-    const R rv_n = dot(rv, pole);
-    const Vec3<R> w = rv - pole * rv_n;
-    if (!(length_squared(w) > R(0))) continue;
-    // w between a and b on the arc (the arc is shorter than pi: a, b not antiparallel here).
-    if (dot(cross(a, w), pole) >= R(0) && dot(cross(w, b), pole) >= R(0)) {
-      const R angle_w = std::atan2(std::abs(rv_n), length(w));
-      if (angle_w < best) { best = angle_w; peak.direction = normalize(w); }
-    }
+    const ArcFoot<R> f = arc_foot(view, poly.d[i], poly.d[(i + 1) % poly.count], rv);
+    if (!f.between) continue;
+    const R angle_w = std::atan2(std::abs(f.rv_n), length(f.w));
+    if (angle_w < best) { best = angle_w; peak.direction = normalize(f.w); }
   }
   // Endpoints b are the next edge's a: covered by the loop.
   peak.angle = best;
@@ -83,27 +99,18 @@ AreaPeak<R> area_specular_peak_direction(const ClipPolygon<R>& poly, const AreaV
 // Whether some direction toward the (clipped) light lies within the angle acos(cos_min) of the
 // unit rv, 0 < cos_min < 1: whether the peak's angle above is at most that, by the same boundary
 // search with cosines and sines instead of angles (no atan2): a vertex direction a with
-// Rv.a >= cos_min |a|, or an edge whose great circle passes within that angle (|Rv.n_i| <=
-// sin) at a point between its ends. The exact specular's dispatch (area_light.h) asks it.
+// Rv.a >= cos_min |a|, or an arc whose closest direction to Rv has |Rv.n| <= sin. The exact
+// specular's dispatch (area_light.h) asks it.
 template <class R>
 bool area_lobe_reaches(const ClipPolygon<R>& poly, const AreaView<R>& view, const Vec3<R>& rv, R cos_min) {
   if (!view.lit || poly.count < 3) return false;
   if (ray_hits_polygon(poly, view, rv)) return true;
   const R sin_max = std::sqrt((R(1) - cos_min) * (R(1) + cos_min));
   for (int i = 0; i < poly.count; ++i) {
-    const Vec3<R>& di = poly.d[i];
-    const Vec3<R>& dj = poly.d[(i + 1) % poly.count];
-    const Vec3<R> a = view.D + di;
+    const Vec3<R> a = view.D + poly.d[i];
     if (dot(rv, a) >= cos_min * length(a)) return true;
-    const Vec3<R> cr = cross(view.D, dj - di) + cross(di, dj);  // a x b
-    const R s = length(cr);
-    if (!(s > R(0))) continue;
-    const Vec3<R> pole = cr / s;
-    const R rv_n = dot(rv, pole);
-    if (!(std::abs(rv_n) <= sin_max)) continue;
-    const Vec3<R> w = rv - pole * rv_n;
-    const Vec3<R> b = view.D + dj;
-    if (dot(cross(a, w), pole) >= R(0) && dot(cross(w, b), pole) >= R(0)) return true;
+    const ArcFoot<R> f = arc_foot(view, poly.d[i], poly.d[(i + 1) % poly.count], rv);
+    if (f.between && std::abs(f.rv_n) <= sin_max) return true;
   }
   return false;
 }

@@ -21,8 +21,9 @@
 //        ever finer (every triangle of its near half matters); up to 1e6 triangles.
 //    Silhouettes against triangle cuts (time ratio, largest difference relative to the mean),
 //    the cuts up to 1e4 triangles for the sphere (their cost grows faster than the triangles).
-//    Beside them, a tube light across the square's middle over the same occluders (its visible
-//    intervals, linear_visibility.h).
+//    Beside them, a tube light across the square's middle over the same occluders: its visible
+//    intervals from silhouettes (linear_silhouette.h, the default) against every triangle's
+//    interval (linear_visibility.h, the reference), time ratio and largest difference.
 //    --repeat N: each silhouette loop of part 3 runs N times and the fastest run is reported (a
 //    busy machine only adds time; the results are the same bits every time).
 //    --min-triangles N: only the rows of at least about N triangles (to profile the large ones,
@@ -327,8 +328,7 @@ void scaling(bool quick, int repeat, std::size_t min_triangles) {
   l.name = "square";
   l.polygon = {{-0.5, -0.5, 2}, {-0.5, 0.5, 2}, {0.5, 0.5, 2}, {0.5, -0.5, 2}};
   const PreparedLight<double> light = prepare_light<double>(l);
-  // A tube across the square's middle: linear lights keep their per-triangle intervals
-  // (linear_visibility.h), whose query is the flat triangle (P, Q0, Q1).
+  // A tube across the square's middle; both of its methods query the flat triangle (P, Q0, Q1).
   LightSource tube_source;
   tube_source.type = LightType::kLinear;
   tube_source.name = "tube";
@@ -344,12 +344,15 @@ void scaling(bool quick, int repeat, std::size_t min_triangles) {
   for (int series = 0; series < 2; ++series) {
     std::printf("%s\n\n| triangles | BVH build (ms) | CPU µs per vertex (silhouettes) | CPU µs per vertex (silhouettes, "
                 "clusters of %d) | CPU µs per vertex (triangle cuts) | cuts / silhouettes | largest difference / mean "
-                "(clusters; cuts) | mean diffuse | CPU µs per vertex (tube, intervals) | mean diffuse (tube) |\n"
-                "|---|---|---|---|---|---|---|---|---|---|\n",
+                "(clusters; cuts) | mean diffuse | CPU µs per vertex (tube, silhouettes) | CPU µs per vertex (tube, "
+                "intervals) | intervals / silhouettes | largest difference / mean (tube) | mean diffuse (tube) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
                 series == 0 ? "(a) the scene grows (constant density field):" : "(b) one sphere, refined:",
                 o.shadow_cluster_size);
     ShadeOptions cut_options = o;
     cut_options.area_shadows = AreaShadowMethod::kTriangleCuts;
+    ShadeOptions interval_options = o;
+    interval_options.linear_shadows = LinearShadowMethod::kTriangleIntervals;
     for (std::size_t n : {100ul, 1000ul, 10000ul, 100000ul, 1000000ul}) {
       if (quick && n > 1000) break;
       if (n < min_triangles) continue;
@@ -359,10 +362,11 @@ void scaling(bool quick, int repeat, std::size_t min_triangles) {
       const OccluderBvh bvh = series == 0 ? make_bvh(tris) : closed_bvh(tris);
       const double build = seconds_since(t);
       // One search per vertex: the fastest run's seconds per vertex, the diffuse of each and their mean.
-      auto per_vertex_of = [&](const PreparedLight<double>& l, std::vector<double>& values, double& mean) {
+      auto per_vertex_of = [&](const PreparedLight<double>& l, std::vector<double>& values, double& mean,
+                               const ShadeOptions& with) {
         values.resize(pts.size());
         const double seconds = fastest_seconds(repeat, [&] {
-          for (std::size_t i = 0; i < pts.size(); ++i) values[i] = shade_shadowed(l, pts[i], o, bvh).diffuse;
+          for (std::size_t i = 0; i < pts.size(); ++i) values[i] = shade_shadowed(l, pts[i], with, bvh).diffuse;
         });
         mean = 0;
         for (double v : values) mean += v;
@@ -371,7 +375,7 @@ void scaling(bool quick, int repeat, std::size_t min_triangles) {
       };
       std::vector<double> value;
       double mean = 0;
-      const double per_vertex = per_vertex_of(light, value, mean);
+      const double per_vertex = per_vertex_of(light, value, mean, o);
       // The vertex loop's path: one BVH search per cluster of neighbouring receivers (one thread).
       std::vector<Vec3d> clustered(pts.size());
       const double cluster_per_vertex = fastest_seconds(repeat, [&] {
@@ -381,9 +385,17 @@ void scaling(bool quick, int repeat, std::size_t min_triangles) {
       double cluster_difference = 0;
       for (std::size_t i = 0; i < pts.size(); ++i)
         cluster_difference = std::max(cluster_difference, std::abs(clustered[i].x / light.radiance.x - value[i]));
-      std::vector<double> tube_value;
-      double tube_mean = 0;
-      const double tube_per_vertex = per_vertex_of(tube, tube_value, tube_mean);
+      std::vector<double> tube_value, tube_interval_value;
+      double tube_mean = 0, tube_interval_mean = 0;
+      const double tube_per_vertex = per_vertex_of(tube, tube_value, tube_mean, o);
+      const double tube_interval_per_vertex = per_vertex_of(tube, tube_interval_value, tube_interval_mean, interval_options);
+      double tube_difference = 0;
+      for (std::size_t i = 0; i < pts.size(); ++i)
+        tube_difference = std::max(tube_difference, std::abs(tube_value[i] - tube_interval_value[i]));
+      char tube_columns[160];
+      std::snprintf(tube_columns, sizeof tube_columns, "%.1f | %.1f | %.1f | %.1e | %.6f", 1e6 * tube_per_vertex,
+                    1e6 * tube_interval_per_vertex, tube_interval_per_vertex / tube_per_vertex,
+                    tube_mean > 0 ? tube_difference / tube_mean : tube_difference, tube_mean);
       const bool cuts = series == 0 || n <= 10000;  // the cuts take ~0.5 s per vertex at 1e5 sphere triangles
       double cut_per_vertex = 0, difference = 0;
       if (cuts) {
@@ -393,14 +405,12 @@ void scaling(bool quick, int repeat, std::size_t min_triangles) {
         cut_per_vertex = seconds_since(t) / pts.size();
       }
       if (cuts)
-        std::printf("| %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1e; %.1e | %.6f | %.1f | %.6f |\n", tris.size(),
+        std::printf("| %zu | %.1f | %.1f | %.1f | %.1f | %.1f | %.1e; %.1e | %.6f | %s |\n", tris.size(),
                     1e3 * build, 1e6 * per_vertex, 1e6 * cluster_per_vertex, 1e6 * cut_per_vertex,
-                    cut_per_vertex / per_vertex, cluster_difference / mean, difference / mean, mean,
-                    1e6 * tube_per_vertex, tube_mean);
+                    cut_per_vertex / per_vertex, cluster_difference / mean, difference / mean, mean, tube_columns);
       else
-        std::printf("| %zu | %.1f | %.1f | %.1f | — | — | %.1e; — | %.6f | %.1f | %.6f |\n", tris.size(), 1e3 * build,
-                    1e6 * per_vertex, 1e6 * cluster_per_vertex, cluster_difference / mean, mean, 1e6 * tube_per_vertex,
-                    tube_mean);
+        std::printf("| %zu | %.1f | %.1f | %.1f | — | — | %.1e; — | %.6f | %s |\n", tris.size(), 1e3 * build,
+                    1e6 * per_vertex, 1e6 * cluster_per_vertex, cluster_difference / mean, mean, tube_columns);
       std::fflush(stdout);
     }
     std::printf("\n");

@@ -24,6 +24,10 @@ namespace vlit {
 // edges of the occluders (area_silhouette.h; falls back to the cuts where its checks fail), or by
 // cutting the light with every occluder triangle (area_visibility.h; the tests' reference).
 enum class AreaShadowMethod { kSilhouette, kTriangleCuts };
+// The same for a linear light: from the silhouette edges crossing the plane of P and the segment
+// (linear_silhouette.h; falls back to the intervals where its checks fail), or from every
+// occluder triangle's hidden interval (linear_visibility.h; the tests' reference).
+enum class LinearShadowMethod { kSilhouette, kTriangleIntervals };
 
 struct ShadeOptions {
   bool with_specular = true;
@@ -34,6 +38,7 @@ struct ShadeOptions {
   SpecularOptions specular;
   LinearDiffuseOptions linear;
   AreaShadowMethod area_shadows = AreaShadowMethod::kSilhouette;
+  LinearShadowMethod linear_shadows = LinearShadowMethod::kSilhouette;
   // The vertex loop searches the occluders once per cluster of neighbouring vertices
   // (src/shadow/silhouette_cluster.h) instead of once per vertex; same results. Off: the
   // benchmarks' baseline.

@@ -7,14 +7,12 @@
 
 #include "core/robust_math.h"
 #include "shadow/silhouette_cluster.h"
+#include "shadow/silhouette_rule.h"
 #include "shadow/sweep_axes.h"
 
 namespace vlit {
 namespace {
 
-// A shadow ray whose crossing lies within this fraction of a triangle's edge (in barycentric
-// terms) or of the slab's planes is not counted: another point is tried.
-constexpr double kRayAmbiguity = 1e-9;
 constexpr int kMaxReferenceRays = 8;
 constexpr double kThinSlab = 1e-12;
 
@@ -71,70 +69,20 @@ void add_segment(const Frame& f, ClippedPoint a, ClippedPoint b, int weight, std
   out.push_back(s);
 }
 
-// The point where the side x -> y of a triangle crosses the plane h, computed from the side's
-// endpoints in lexicographic order so that every triangle (and edge) sharing the side gets the
-// same bits.
-Vec3d crossing(const Vec3d& x, const Vec3d& y, const HalfSpace& h) {
-  const bool x_first = lexicographic_less(x, y);
-  const Vec3d& a = x_first ? x : y;
-  const Vec3d& b = x_first ? y : x;
-  const double sa = h.signed_distance(a), sb = h.signed_distance(b);
-  return a + (b - a) * (sa / (sa - sb));
-}
-
-// +1: the triangle faces P (its projection is counter-clockwise), -1: it faces away, 0: it hides
-// nothing (is_occluder, or it touches P).
-int facing_of(const OccluderBvh& occluders, std::uint32_t t, const Vec3d& p, AreaSilhouetteScratch& s) {
-  AreaSilhouetteScratch::Facing& cached = s.facing[t];
-  if (cached.stamp == s.stamp) return cached.facing;
-  bool front = false;
-  int f = 0;
-  if (!touches(occluders.triangles().corners[t], p) && is_occluder(occluders, t, p, &front)) f = front ? 1 : -1;
-  cached = {s.stamp, static_cast<std::int8_t>(f)};
-  return f;
-}
-
 // Edge e of the occluders, clipped to the slab, as a silhouette segment of the given weight.
 void add_edge(const Frame& f, const OccluderEdges& edges, std::uint32_t e, int weight, AreaSilhouetteScratch& s) {
   const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
-  const Vec3d& a = edges.endpoints[e][0];
-  const Vec3d& b = edges.endpoints[e][1];
-  ClippedPoint ca{a}, cb{b};
-  for (const HalfSpace& h : slab) {
-    const double sa = h.signed_distance(a), sb = h.signed_distance(b);
-    if (sa < 0 && sb < 0) return;
-    if (sa < 0) ca.x = a + (b - a) * (sa / (sa - sb));
-    if (sb < 0) cb.x = a + (b - a) * (sa / (sa - sb));
-  }
+  ClippedPoint ca, cb;
+  if (!clip_edge_to_slab(edges.endpoints[e][0], edges.endpoints[e][1], slab, ca.x, cb.x)) return;
   add_segment(f, ca, cb, weight, s.segments);
 }
 
-// The weight of edge e seen from P: the facings of its triangles, each signed by its direction.
-int edge_weight(const OccluderBvh& occluders, std::uint32_t e, const Vec3d& p, AreaSilhouetteScratch& s) {
-  const OccluderEdges& edges = occluders.edges();
-  int weight = 0;
-  for (std::uint32_t k = edges.first_incident[e]; k < edges.first_incident[e + 1]; ++k) {
-    const std::uint32_t code = edges.incident[k];
-    weight += facing_of(occluders, code / 3, p, s) * edges.direction_of[code / 3][code % 3];
-  }
-  return weight;
-}
-
-// Chords: where triangle t (facing ft, not 0) leaves the slab through one of its planes, the kept
-// part is closed along the plane from the exit point to the entry point.
+// Chords where triangle c (facing ft, not 0) leaves the slab, as silhouette segments of weight ft.
 void add_chords(const Frame& f, const std::array<Vec3d, 3>& c, int ft, AreaSilhouetteScratch& s) {
-  for (const HalfSpace& h : {f.slab.beyond_light, f.slab.before_p}) {
-    const double d[3] = {h.signed_distance(c[0]), h.signed_distance(c[1]), h.signed_distance(c[2])};
-    const bool in[3] = {d[0] >= 0, d[1] >= 0, d[2] >= 0};
-    if (in[0] == in[1] && in[1] == in[2]) continue;
-    ClippedPoint exit, entry;
-    for (int j = 0; j < 3; ++j) {
-      const int k = (j + 1) % 3;
-      if (in[j] && !in[k]) exit.x = crossing(c[j], c[k], h);
-      if (!in[j] && in[k]) entry.x = crossing(c[j], c[k], h);
-    }
-    add_segment(f, exit, entry, ft, s.segments);
-  }
+  const HalfSpace slab[2] = {f.slab.beyond_light, f.slab.before_p};
+  for_each_slab_chord(c, slab, [&](const Vec3d& exit, const Vec3d& entry) {
+    add_segment(f, ClippedPoint{exit}, ClippedPoint{entry}, ft, s.segments);
+  });
 }
 
 // The silhouette segments: weighted edges, and chords where a triangle leaves the slab; of the
@@ -184,12 +132,11 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const Silh
     // A candidate that hides nothing itself (it touches P, is a culled back face, a needle) still
     // weighs its edges: its neighbours may lie in subtrees the search skipped.
     const std::uint32_t t = s.candidates[i];
-    const int ft = facing_of(occluders, t, f.p, s);
+    const int ft = s.facings.facing_of(occluders, t, f.p);
     for (int j = 0; j < 3; ++j) {
       const std::uint32_t e = edges.edge_of[t][j];
-      if (s.edge_stamp[e] == s.stamp) continue;
-      s.edge_stamp[e] = s.stamp;
-      const int weight = edge_weight(occluders, e, f.p, s);
+      if (!s.facings.first_visit(e)) continue;
+      const int weight = s.facings.edge_weight(occluders, e, f.p);
       if (weight != 0) add_edge(f, edges, e, weight, s);
     }
     // A candidate whose leaf the search found inside both planes of the slab has no chord.
@@ -200,47 +147,15 @@ void collect_silhouette(const Frame& f, const OccluderBvh& occluders, const Silh
 // Number of occluder triangles (clipped to the slab) that the segment P -> x crosses, or -1 if a
 // crossing is too close to an edge of a triangle or to a plane of the slab to be counted.
 int depth_at(const Frame& f, const Vec3d& x, const OccluderBvh& occluders, AreaSilhouetteScratch& s) {
-  const OccluderTriangles& triangles = occluders.triangles();
-  const Vec3d dir = x - f.p;
-  occluders.triangles_near_segment(f.p, x, s.ray_candidates);
-  const double plane_tol = kRayAmbiguity * (f.height + (f.rect.x1 - f.rect.x0) + (f.rect.y1 - f.rect.y0));
+  CountingSlab slab{f.slab.beyond_light, f.slab.before_p};
+  slab.plane_tol = kRayAmbiguity * (f.height + (f.rect.x1 - f.rect.x0) + (f.rect.y1 - f.rect.y0));
   // The slab's plane before P lies kApexMargin h from P, less than plane_tol: with plane_tol there,
   // a triangle through P (a corner of another mesh a rounding error off P, which `touches` does
   // not see) was ambiguous for every ray, and the light went to the triangle cuts. Half the apex
   // margin keeps a hit at P itself clearly outside the slab, and is still far above the rounding
   // of d1.
-  const double apex_tol = std::min(plane_tol, 0.5 * kApexMargin * f.height);
-  int count = 0;
-  for (std::uint32_t t : s.ray_candidates) {
-    const auto& c = triangles.corners[t];
-    bool outside = false;  // wholly outside the slab: not counted, whatever the crossing test says
-    for (const HalfSpace* h : {&f.slab.beyond_light, &f.slab.before_p})
-      outside = outside || (h->signed_distance(c[0]) < 0 && h->signed_distance(c[1]) < 0 && h->signed_distance(c[2]) < 0);
-    if (outside) continue;
-    const Vec3d e1 = c[1] - c[0], e2 = c[2] - c[0];
-    const Vec3d pvec = cross(dir, e2);
-    const double det = dot(e1, pvec);
-    if (!(std::abs(det) > 0)) continue;
-    const double inv = 1.0 / det;
-    const Vec3d tvec = f.p - c[0];
-    const double b1 = dot(tvec, pvec) * inv;
-    const Vec3d qvec = cross(tvec, e1);
-    const double b2 = dot(dir, qvec) * inv;
-    const double b0 = 1 - b1 - b2;
-    const double t_hit = dot(e2, qvec) * inv;
-    if (!(t_hit > 0 && t_hit < 1)) continue;
-    const double margin = std::min({b0, b1, b2});
-    if (margin < -kRayAmbiguity) continue;
-    // A triangle that hides nothing from P (facing_of 0) is not counted, and is not ambiguous:
-    // asked only of the triangles the ray meets.
-    if (facing_of(occluders, t, f.p, s) == 0) continue;
-    const Vec3d hit = f.p + dir * t_hit;
-    const double d0 = f.slab.beyond_light.signed_distance(hit), d1 = f.slab.before_p.signed_distance(hit);
-    if (d0 < -plane_tol || d1 < -apex_tol) continue;
-    if (margin <= kRayAmbiguity || d0 <= plane_tol || d1 <= apex_tol) return -1;
-    ++count;
-  }
-  return count;
+  slab.apex_tol = std::min(slab.plane_tol, 0.5 * kApexMargin * f.height);
+  return shadow_ray_depth(occluders, f.p, x, slab, s.facings, s.ray_candidates);
 }
 
 // The segment has a part strictly inside the convex polygon `uv` (turning `turn`), deeper than
@@ -318,17 +233,7 @@ SilhouetteVisibility visible_area_by_silhouettes(const PreparedAreaLight<double>
     f.side[k] = {normal, p};
   }
 
-  const std::size_t triangle_count = occluders.triangles().size();
-  if (s.facing.size() != triangle_count || s.edge_stamp.size() != occluders.edges().size()) {
-    s.facing.assign(triangle_count, {0, 0});
-    s.edge_stamp.assign(occluders.edges().size(), 0);
-    s.stamp = 0;
-  }
-  if (++s.stamp == 0) {  // wrapped: forget every stamp
-    std::fill(s.facing.begin(), s.facing.end(), AreaSilhouetteScratch::Facing{0, 0});
-    std::fill(s.edge_stamp.begin(), s.edge_stamp.end(), 0);
-    s.stamp = 1;
-  }
+  s.facings.begin(occluders);
   s.segments.clear();
   collect_silhouette(f, occluders, clustered ? cluster : nullptr, s);
   s.silhouette_segments += static_cast<long>(s.segments.size());

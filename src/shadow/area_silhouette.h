@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "shadow/area_visibility.h"
+#include "shadow/silhouette_rule.h"
 
 namespace vlit {
 
@@ -63,15 +64,8 @@ struct AreaSilhouetteScratch {
   std::vector<std::uint32_t> candidates, ray_candidates;
   std::vector<std::uint8_t> candidate_in_slab;  // per candidate: its leaf lies inside the slab (no chords)
   std::vector<std::uint32_t> leaves;  // positions in a cluster's leaves that P reaches
-  std::vector<std::uint32_t> edge_stamp;  // per occluder edge: the query that last weighed it
-  // Per occluder triangle: its facing from P (facing_of), valid when its stamp is the query's.
-  struct Facing {
-    std::uint32_t stamp;
-    std::int8_t facing;
-  };
-  std::vector<Facing> facing;
+  SilhouetteFacings facings;  // the triangles' facings from P and the edges already weighed
   std::vector<std::int8_t> slot_facing;   // per slot of a cluster (silhouette_cluster.h) from P, or 2: not yet
-  std::uint32_t stamp = 0;
   std::vector<SilhouetteSegment> segments;
   std::vector<double> events, starts, other_events;
   std::vector<std::pair<double, int>> left_steps;

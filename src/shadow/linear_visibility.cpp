@@ -6,8 +6,6 @@
 namespace vlit {
 namespace {
 
-constexpr double kNearP = 1e-9;       // λ margin next to P
-constexpr double kNearLight = 1e-7;   // λ margin next to the light
 constexpr double kCollinear = 1e-12;  // h below this fraction of the distance: P on the line
 
 void merge_to_visible(std::vector<std::pair<double, double>>& hidden, std::vector<std::pair<double, double>>& visible) {
@@ -23,6 +21,47 @@ void merge_to_visible(std::vector<std::pair<double, double>>& hidden, std::vecto
 }
 
 }  // namespace
+
+bool linear_shadow_frame(const LinearLight<double>& light, const Vec3d& p, LinearShadowFrame& frame) {
+  const Vec3d l0 = light.q0 - p, ld = light.q1 - light.q0;
+  const double len = length(ld);
+  const double dist = std::max(length(l0), length(light.q1 - p));
+  if (!(dist > 0) || !(len > 1e-15 * dist)) return false;
+  const Vec3d u = ld / len;
+  const double s0 = dot(l0, u);   // position of Q0 along u, from the foot's plane through P
+  const Vec3d hvec = l0 - u * s0;  // H = F - P
+  const double h = length(hvec);
+  if (!(h > kCollinear * dist)) return false;
+  frame.u = u;
+  frame.m = hvec / h;
+  frame.plane_normal = cross(frame.m, u);
+  frame.len = len;
+  frame.h = h;
+  frame.t_foot = -s0 / len;
+  const Vec3d& m = frame.m;
+  const Vec3d& plane_normal = frame.plane_normal;
+  frame.strip_near = {m, p + m * (h * kLinearNearP)};
+  frame.strip_far = {-m, p + m * (h * (1 - kLinearNearLight))};
+  ConvexVolume& volume = frame.volume;
+  volume.box = Aabb{};
+  volume.planes.clear();
+  volume.box.grow(p);
+  volume.box.grow(light.q0);
+  volume.box.grow(light.q1);
+  const double thickness = 1e-9 * dist;
+  volume.planes.push_back({plane_normal, p - plane_normal * thickness});
+  volume.planes.push_back({-plane_normal, p + plane_normal * thickness});
+  volume.planes.push_back({-m, p + m * h});  // not beyond the light's line
+  {
+    // Wedge sides: the planes through P and each end, containing the normal of Π.
+    Vec3d k0 = cross(plane_normal, l0), k1 = cross(light.q1 - p, plane_normal);
+    if (dot(k0, ld) < 0) k0 = -k0;
+    if (dot(k1, -ld) < 0) k1 = -k1;
+    volume.planes.push_back({k0, p});
+    volume.planes.push_back({k1, p});
+  }
+  return true;
+}
 
 LinearVisibility visible_linear_intervals(const LinearLight<double>& light, const Vec3d& p,
                                           const OccluderBvh& occluders, LinearShadowScratch& scratch) {
@@ -47,34 +86,15 @@ LinearVisibility visible_linear_intervals(const LinearLight<double>& light, cons
     if (!occluders.segment_occluded(p, nearer, p)) return LinearVisibility::kUnoccluded;
     return LinearVisibility::kIntervals;
   }
-  const Vec3d m = hvec / h;
-  const Vec3d plane_normal = cross(m, u);  // unit normal of Π
-  const double t_foot = -s0 / len;
-
-  // The query volume: a thin slab around Π over the triangle (P, Q0, Q1).
-  ConvexVolume volume;
-  volume.box.grow(p);
-  volume.box.grow(light.q0);
-  volume.box.grow(light.q1);
-  const double thickness = 1e-9 * dist;
-  volume.planes.push_back({plane_normal, p - plane_normal * thickness});
-  volume.planes.push_back({-plane_normal, p + plane_normal * thickness});
-  volume.planes.push_back({-m, p + m * h});  // not beyond the light's line
-  {
-    // Wedge sides: the planes through P and each end, containing the normal of Π.
-    Vec3d k0 = cross(plane_normal, l0), k1 = cross(light.q1 - p, plane_normal);
-    if (dot(k0, ld) < 0) k0 = -k0;
-    if (dot(k1, -ld) < 0) k1 = -k1;
-    volume.planes.push_back({k0, p});
-    volume.planes.push_back({k1, p});
-  }
+  LinearShadowFrame frame;
+  linear_shadow_frame(light, p, frame);
+  const Vec3d& plane_normal = frame.plane_normal;
+  const ConvexVolume& volume = frame.volume;
   occluders.triangles_in_volume(volume, p, scratch.candidates);
   if (scratch.candidates.empty()) return LinearVisibility::kUnoccluded;
 
-  auto lambda = [&](const Vec3d& x) { return dot(x - p, m) / h; };
-  auto t_of = [&](const Vec3d& x, double lam) { return t_foot + dot(x - p, u) / lam / len; };
-  const HalfSpace strip_near{m, p + m * (h * kNearP)};
-  const HalfSpace strip_far{-m, p + m * (h * (1 - kNearLight))};
+  const HalfSpace& strip_near = frame.strip_near;
+  const HalfSpace& strip_far = frame.strip_far;
   for (std::uint32_t index : scratch.candidates) {
     if (culled_back_face(occluders.triangles(), index, p, occluders.plane(index).normal)) continue;
     const auto& tri = occluders.triangles().corners[index];
@@ -109,9 +129,9 @@ LinearVisibility visible_linear_intervals(const LinearLight<double>& light, cons
     if (a.count == 0) continue;
     double t_lo = 1e300, t_hi = -1e300;
     for (int i = 0; i < a.count; ++i) {
-      const double lam = lambda(a.p[i]);
+      const double lam = frame.lambda(p, a.p[i]);
       if (!(lam > 0)) continue;
-      const double t = t_of(a.p[i], lam);
+      const double t = frame.t_of(p, a.p[i], lam);
       t_lo = std::min(t_lo, t);
       t_hi = std::max(t_hi, t);
     }

@@ -25,12 +25,33 @@
 
 namespace vlit {
 
+// The strip where occluders count: λ in (kLinearNearP, 1 - kLinearNearLight).
+inline constexpr double kLinearNearP = 1e-9;      // λ margin next to P
+inline constexpr double kLinearNearLight = 1e-7;  // λ margin next to the light
+
 struct LinearShadowScratch {
   std::vector<std::uint32_t> candidates;
   std::vector<std::pair<double, double>> hidden, visible;
 };
 
 enum class LinearVisibility { kUnoccluded, kIntervals };
+
+// The geometry both linear methods share (this file's intervals, linear_silhouette.h): the plane Π
+// of (P, Q0, Q1), the strip in it where occluders count, and the volume the BVH is asked about.
+struct LinearShadowFrame {
+  Vec3d u;             // unit, along the segment
+  Vec3d m;             // unit, from P to its foot on the segment's line
+  Vec3d plane_normal;  // unit normal of Π
+  double len = 0, h = 0, t_foot = 0;
+  HalfSpace strip_near, strip_far;  // λ >= kLinearNearP, λ <= 1 - kLinearNearLight
+  ConvexVolume volume;              // a thin slab around Π over the triangle (P, Q0, Q1)
+  double lambda(const Vec3d& p, const Vec3d& x) const { return dot(x - p, m) / h; }
+  double t_of(const Vec3d& p, const Vec3d& x, double lam) const { return t_foot + dot(x - p, u) / lam / len; }
+};
+
+// False where the segment has (nearly) no length or P lies (nearly) on its line: then only
+// visible_linear_intervals decides, with one shadow ray.
+bool linear_shadow_frame(const LinearLight<double>& light, const Vec3d& p, LinearShadowFrame& frame);
 
 // kIntervals: scratch.visible holds the visible [t_a, t_b] intervals (possibly none).
 LinearVisibility visible_linear_intervals(const LinearLight<double>& light, const Vec3d& p,

@@ -7,6 +7,7 @@
 #include "shadow/area_visibility.h"
 #include "shadow/crease_wedges.h"
 #include "shadow/disk_pieces.h"
+#include "shadow/linear_silhouette.h"
 #include "shadow/linear_visibility.h"
 
 namespace vlit {
@@ -83,16 +84,33 @@ Response<double> shade_linear_shadowed(const LinearLight<double>& light, const S
                                        const ShadeOptions& options, const OccluderBvh& occluders,
                                        std::span<const WedgeCone> wedges) {
   const SpecularOptions spec = effective_specular(options);
+  // Every linear kernel integrates over the part of the light above P's horizon (their frame's
+  // clipping): where none of it is, there is no visibility to find.
+  if (make_linear_frame(light, sp).empty) return shade_linear(light, sp, spec, options.linear);
   thread_local LinearShadowScratch scratch;
-  const bool unoccluded = visible_linear_intervals(light, sp.p, occluders, scratch) == LinearVisibility::kUnoccluded;
-  if (unoccluded) scratch.visible.assign(1, {0.0, 1.0});
-  const bool wedged = !wedges.empty() && remove_wedges(light, sp, wedges, scratch.visible);
+  thread_local LinearSilhouetteScratch silhouette;
+  std::vector<std::pair<double, double>>* found = nullptr;  // the visible intervals
+  bool unoccluded = false;
+  if (options.linear_shadows == LinearShadowMethod::kSilhouette) {
+    switch (visible_linear_by_silhouettes(light, sp.p, occluders, silhouette)) {
+      case LinearSilhouetteVisibility::kUnoccluded: unoccluded = true, found = &silhouette.visible; break;
+      case LinearSilhouetteVisibility::kIntervals: found = &silhouette.visible; break;
+      case LinearSilhouetteVisibility::kUndecided: break;
+    }
+  }
+  if (!found) {
+    unoccluded = visible_linear_intervals(light, sp.p, occluders, scratch) == LinearVisibility::kUnoccluded;
+    found = &scratch.visible;
+  }
+  std::vector<std::pair<double, double>>& visible = *found;
+  if (unoccluded) visible.assign(1, {0.0, 1.0});
+  const bool wedged = !wedges.empty() && remove_wedges(light, sp, wedges, visible);
   if (unoccluded && !wedged) return shade_linear(light, sp, spec, options.linear);
   Response<double> sum;
   const Vec3d ld = light.q1 - light.q0;
   SpecularOptions piece_spec = spec;
   if (spec.method == SpecularMethod::kNeighborhood) piece_spec.method = SpecularMethod::kNone;
-  for (const auto& [ta, tb] : scratch.visible) {
+  for (const auto& [ta, tb] : visible) {
     const double weight = tb - ta;
     if (!(weight > 0)) continue;
     const LinearLight<double> piece{ta == 0 ? light.q0 : light.q0 + ld * ta, tb == 1 ? light.q1 : light.q0 + ld * tb,
@@ -102,8 +120,8 @@ Response<double> shade_linear_shadowed(const LinearLight<double>& light, const S
     if (spec.method == SpecularMethod::kExact) sum.specular += weight * r.specular;
     if (spec.method == SpecularMethod::kPeak) sum.specular = std::max(sum.specular, r.specular);  // a maximum
   }
-  if (spec.method == SpecularMethod::kNeighborhood && !scratch.visible.empty())
-    sum.specular = linear_neighborhood_shadowed(light, sp, spec.neighborhood_samples, scratch.visible);
+  if (spec.method == SpecularMethod::kNeighborhood && !visible.empty())
+    sum.specular = linear_neighborhood_shadowed(light, sp, spec.neighborhood_samples, visible);
   return sum;
 }
 

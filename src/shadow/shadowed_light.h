@@ -5,9 +5,11 @@
 // Per model:
 // - point, spot: one shadow ray from P to the light's position;
 // - directional: one shadow ray from P against the light, past every occluder;
-// - linear: the visible sub-segments [t_a, t_b] (linear_visibility.h). Intensity is per unit of
-//   t (docs/lights-json.md), so a sub-segment shaded as a light of its own is scaled by
-//   (t_b - t_a) to keep the same emission density: diffuse and exact specular sum over the
+// - linear: the visible sub-segments [t_a, t_b], from the silhouette edges crossing the plane of
+//   P and the segment (linear_silhouette.h; ShadeOptions::linear_shadows) or, where its checks
+//   fail or when asked, from every occluder's hidden interval (linear_visibility.h). Intensity
+//   is per unit of t (docs/lights-json.md), so a sub-segment shaded as a light of its own is
+//   scaled by (t_b - t_a) to keep the same emission density: diffuse and exact specular sum over the
 //   pieces with that weight; the peak specular is the largest peak over the pieces (a maximum,
 //   not an integral); the neighbourhood specular keeps the whole light's K samples and counts
 //   only the visible ones (so it never exceeds the unshadowed value);

@@ -34,8 +34,8 @@ bool contains(const Aabb& outer, const Aabb& inner) {
          inner.hi.y <= outer.hi.y && inner.hi.z <= outer.hi.z;
 }
 
-// The facing of triangle t (facing_of in area_silhouette.cpp: +1 faces P, -1 faces away, 0
-// hides nothing) if it is the same for every P of the box b, else kVariableFacing.
+// The facing of triangle t (SilhouetteFacings::facing_of in silhouette_rule.h: +1 faces P, -1
+// faces away, 0 hides nothing) if it is the same for every P of the box b, else kVariableFacing.
 std::int8_t facing_over_box(const OccluderBvh& occluders, std::uint32_t t, const Aabb& b) {
   const OccluderTriangles& triangles = occluders.triangles();
   const auto& c = triangles.corners[t];

@@ -1,7 +1,7 @@
 // The margins next to the shaded point: an occluder close above a vertex must hide the light.
 //
 // The area visibility (src/shadow/area_visibility.cpp, kApexMargin) and the linear visibility
-// (src/shadow/linear_visibility.cpp, kNearP) ignore whatever lies within margin x h of P, where h
+// (src/shadow/linear_visibility.h, kLinearNearP) ignore whatever lies within margin x h of P, where h
 // is P's distance to the light's plane (area) or line (linear). The margin exists so that P's own
 // triangles and rounding at P (about 1e-16 x the coordinates' size) do not shadow P; but it also
 // hides real occluders. The bound they rely on:

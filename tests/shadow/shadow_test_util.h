@@ -1,8 +1,12 @@
 // Small builders shared by the shadow tests.
 #pragma once
 
+#include <doctest/doctest.h>
+
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
 #include <vector>
 
 #include "shading/prepared_light.h"
@@ -59,6 +63,56 @@ inline void add_box(std::vector<Tri>& tris, const Vec3d& lo, const Vec3d& hi) {
   add_quad(tris, lo + ey, ez, ex);            // back
   add_quad(tris, lo, ez, ey);                 // left
   add_quad(tris, lo + ex, ey, ez);            // right
+}
+
+// x turned by `angle` about `axis` (Rodrigues).
+inline Vec3d rotate(const Vec3d& x, const Vec3d& axis, double angle) {
+  const Vec3d k = normalize(axis);
+  return x * std::cos(angle) + cross(k, x) * std::sin(angle) + k * (dot(k, x) * (1 - std::cos(angle)));
+}
+
+// A closed 0.6 x 0.5 x 0.4 box turned by a random angle about a random axis, centred near
+// (0.1, -0.1, 1.5).
+inline std::vector<Tri> turned_box(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.2, 1.2), angle(0, 6.283185307179586);
+  std::vector<Tri> box;
+  add_box(box, {-0.3, -0.25, -0.2}, {0.3, 0.25, 0.2});
+  const Vec3d axis{u(rng), u(rng), u(rng)};
+  const double a = angle(rng);
+  for (Tri& t : box)
+    for (Vec3d& x : t) x = rotate(x, axis, a) + Vec3d{0.1, -0.1, 1.5};
+  return box;
+}
+
+// One tilted plate about 1 above the floor, triangulated three ways: two triangles along either
+// diagonal, and a fan with a T-junction on an edge (its neighbour keeps the long edge).
+inline std::vector<std::vector<Tri>> plate_triangulations() {
+  const Vec3d a{-0.4, -0.3, 1}, b{0.5, -0.35, 1.1}, c{0.45, 0.4, 1.05}, d{-0.35, 0.45, 0.95};
+  const Vec3d m = (a + b) * 0.5;
+  return {{{a, b, c}, {a, c, d}}, {{a, b, d}, {b, c, d}}, {{a, m, d}, {m, b, c}, {m, c, d}}};
+}
+
+// `count` random triangles between a floor at z = 0 and a light at z = 2: a corner anywhere over
+// [-1.5, 1.5]^2 at height 0.2 .. 1.8, the other two within 0.4 of it on each axis.
+inline void add_random_triangles(std::vector<Tri>& tris, std::mt19937_64& rng, int count) {
+  std::uniform_real_distribution<double> u(-1.5, 1.5), z(0.2, 1.8), small(-0.4, 0.4);
+  for (int k = 0; k < count; ++k) {
+    const Vec3d c{u(rng), u(rng), z(rng)};
+    tris.push_back({c, c + Vec3d{small(rng), small(rng), small(rng)}, c + Vec3d{small(rng), small(rng), small(rng)}});
+  }
+}
+
+// A fast method's shaded value `a` against its reference's `b` at one point: `a` is finite, >= 0
+// and not above the unshadowed value `open`; the largest differences seen so far, relative to
+// `open`, grow to this point's.
+inline void record_agreement(const Response<double>& a, const Response<double>& b, const Response<double>& open,
+                             double& diffuse, double& specular) {
+  REQUIRE(std::isfinite(a.diffuse));
+  REQUIRE(std::isfinite(a.specular));
+  CHECK(a.diffuse >= 0);
+  CHECK(a.diffuse <= open.diffuse * (1 + 1e-9));
+  if (open.diffuse > 0) diffuse = std::max(diffuse, std::abs(a.diffuse - b.diffuse) / open.diffuse);
+  if (open.specular > 0) specular = std::max(specular, std::abs(a.specular - b.specular) / open.specular);
 }
 
 inline ShadeOptions options_with(SpecularMethod method) {

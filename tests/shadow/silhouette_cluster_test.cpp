@@ -227,18 +227,14 @@ TEST_CASE("clusters = one search per vertex: the sphere and table scene tiny, hu
 
 TEST_CASE("clusters = one search per vertex: random soups over a dense floor, a panel and a disk") {
   std::mt19937_64 rng(2611);
-  std::uniform_real_distribution<double> u(-1.5, 1.5), z(0.2, 1.8), small(-0.4, 0.4);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
   const PreparedLight<double> lights[2] = {
       prepare_light<double>(area_source(square_light(0.7, 2))),
       prepare_light<double>(disk_source({0.2, -0.1, 2.2}, normalize(Vec3d{0.2, 0.1, -1}), 0.8))};
   ClusterAgreement all[2];
   for (int trial = 0; trial < 6; ++trial) {
     std::vector<Tri> tris;
-    const int count = 20 + static_cast<int>(rng() % 60);
-    for (int k = 0; k < count; ++k) {
-      const Vec3d c{u(rng), u(rng), z(rng)};
-      tris.push_back({c, c + Vec3d{small(rng), small(rng), small(rng)}, c + Vec3d{small(rng), small(rng), small(rng)}});
-    }
+    add_random_triangles(tris, rng, 20 + static_cast<int>(rng() % 60));
     const OccluderBvh bvh = make_bvh(tris);
     std::vector<ShadingPoint<double>> points;
     const int n = 32;

@@ -21,11 +21,6 @@ using namespace vlit::test;
 
 namespace {
 
-Vec3d rotate(const Vec3d& x, const Vec3d& axis, double angle) {  // Rodrigues
-  const Vec3d k = normalize(axis);
-  return x * std::cos(angle) + cross(k, x) * std::sin(angle) + k * (dot(k, x) * (1 - std::cos(angle)));
-}
-
 struct Agreement {
   double diffuse = 0, specular = 0;  // largest difference / unshadowed value
   int shadowed = 0, cases = 0;
@@ -38,12 +33,7 @@ void compare(const PreparedLight<double>& light, const ShadingPoint<double>& sp,
   cuts.area_shadows = AreaShadowMethod::kTriangleCuts;
   const Response<double> a = shade_shadowed(light, sp, fast, bvh), b = shade_shadowed(light, sp, cuts, bvh);
   const Response<double> open = shade(light, sp, fast);
-  REQUIRE(std::isfinite(a.diffuse));
-  REQUIRE(std::isfinite(a.specular));
-  CHECK(a.diffuse >= 0);
-  CHECK(a.diffuse <= open.diffuse * (1 + 1e-9));
-  if (open.diffuse > 0) out.diffuse = std::max(out.diffuse, std::abs(a.diffuse - b.diffuse) / open.diffuse);
-  if (open.specular > 0) out.specular = std::max(out.specular, std::abs(a.specular - b.specular) / open.specular);
+  record_agreement(a, b, open, out.diffuse, out.specular);
   out.shadowed += b.diffuse < open.diffuse * (1 - 1e-9);
   ++out.cases;
 }
@@ -79,17 +69,13 @@ const PreparedAreaLight<double>& area_of(const PreparedLight<double>& l) {
 TEST_CASE("silhouettes = triangle cuts: random soups between a panel and a floor") {
   const PreparedLight<double> panel = prepare_light<double>(area_source(square_light(0.7, 2)));
   std::mt19937_64 rng(1505);
-  std::uniform_real_distribution<double> u(-1.5, 1.5), z(0.2, 1.8), small(-0.4, 0.4);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
   Agreement agree;
   double decided = 0;
   const int trials = 60;
   for (int trial = 0; trial < trials; ++trial) {
     std::vector<Tri> tris;
-    const int count = 5 + static_cast<int>(rng() % 40);
-    for (int k = 0; k < count; ++k) {
-      const Vec3d c{u(rng), u(rng), z(rng)};
-      tris.push_back({c, c + Vec3d{small(rng), small(rng), small(rng)}, c + Vec3d{small(rng), small(rng), small(rng)}});
-    }
+    add_random_triangles(tris, rng, 5 + static_cast<int>(rng() % 40));
     const OccluderBvh bvh = make_bvh(tris);
     std::vector<ShadingPoint<double>> points;
     for (int k = 0; k < 12; ++k)
@@ -112,7 +98,7 @@ TEST_CASE("silhouettes = triangle cuts: random soups between a panel and a floor
 TEST_CASE("silhouettes = triangle cuts: refined closed spheres and rotated boxes") {
   const PreparedLight<double> panel = prepare_light<double>(area_source(square_light(1, 3)));
   std::mt19937_64 rng(42);
-  std::uniform_real_distribution<double> u(-1.2, 1.2), angle(0, 6.283185307179586);
+  std::uniform_real_distribution<double> u(-1.2, 1.2);
   for (int levels = 0; levels <= 3; ++levels) {
     const std::vector<Tri> sphere = icosphere({0.1, -0.05, 1.4}, 0.55, levels);
     const OccluderBvh bvh = make_bvh(sphere);
@@ -132,13 +118,7 @@ TEST_CASE("silhouettes = triangle cuts: refined closed spheres and rotated boxes
   }
   Agreement boxes;
   for (int trial = 0; trial < 20; ++trial) {
-    std::vector<Tri> box;
-    add_box(box, {-0.3, -0.25, -0.2}, {0.3, 0.25, 0.2});
-    const Vec3d axis{u(rng), u(rng), u(rng)};
-    const double a = angle(rng);
-    for (Tri& t : box)
-      for (Vec3d& x : t) x = rotate(x, axis, a) + Vec3d{0.2 * u(rng) * 0 + 0.1, -0.1, 1.5};
-    const OccluderBvh bvh = make_bvh(box);
+    const OccluderBvh bvh = make_bvh(turned_box(rng));
     for (int k = 0; k < 8; ++k) {
       const ShadingPoint<double> sp = make_shading_point(Vec3d{u(rng), u(rng), 0}, Vec3d{0, 0, 1}, Vec3d{1, 0, 4}, 30.0);
       compare(panel, sp, bvh, SpecularMethod::kExact, boxes);
@@ -317,10 +297,7 @@ TEST_CASE("silhouettes: the answer does not depend on how a surface is triangula
   // One plate as 2 triangles (either diagonal) and as a fan with a T-junction on an edge: every
   // triangulation hides the same part of the light.
   const PreparedLight<double> panel = prepare_light<double>(area_source(square_light(0.8, 2)));
-  const Vec3d a{-0.4, -0.3, 1}, b{0.5, -0.35, 1.1}, c{0.45, 0.4, 1.05}, d{-0.35, 0.45, 0.95};
-  const Vec3d m = (a + b) * 0.5;  // T-junction on edge a-b: its neighbour keeps the long edge
-  const std::vector<std::vector<Tri>> ways{
-      {{a, b, c}, {a, c, d}}, {{a, b, d}, {b, c, d}}, {{a, m, d}, {m, b, c}, {m, c, d}}};
+  const std::vector<std::vector<Tri>> ways = plate_triangulations();
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> u(-1, 1);
   ShadeOptions o = options_with(SpecularMethod::kExact);

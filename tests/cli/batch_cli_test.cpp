@@ -130,7 +130,10 @@ TEST_CASE("--shard I/N: N shards bake every input exactly once, whatever the ord
     for (const auto& f : by_shard.back()) ++times[f];
   }
   CHECK(times.size() == files.size());
-  for (const auto& [file, n] : times) {
+  for (const auto& item : times) {
+    // Named, not bound: CAPTURE's lambda captures it (clang 14 does not capture structured bindings).
+    const auto& file = item.first;
+    const auto& n = item.second;
     CAPTURE(file);
     CHECK(n == 1);
   }

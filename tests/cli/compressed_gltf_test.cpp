@@ -350,7 +350,10 @@ TEST_CASE("bake --meshopt writes EXT_meshopt_compression that decodes to the unc
       const json& view = root["bufferViews"][root["accessors"][accessor]["bufferView"].get<int>()];
       return view["extensions"]["EXT_meshopt_compression"].value("mode", std::string());
     };
-    for (const auto& [semantic, accessor] : prim["attributes"].items()) {
+    for (const auto& item : prim["attributes"].items()) {
+      // Named, not bound: CAPTURE's lambda captures it (clang 14 does not capture structured bindings).
+      const std::string semantic = item.key();
+      const auto& accessor = item.value();
       CAPTURE(semantic);
       CHECK(mode_of(accessor.get<int>()) == "ATTRIBUTES");
     }

@@ -189,7 +189,10 @@ TEST_CASE("malformed light extensions: refused in one line naming the file, no o
       {"emissive-strength-negative", R"("materials": [{"extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": -2}}}], "nodes": [{}]})"},
   };
   const fs::path work = vlit::test::temp_dir("robust-light-ext");
-  for (const auto& [name, body] : cases) {
+  for (const auto& item : cases) {
+    // Named, not bound: CAPTURE's lambda captures it (clang 14 does not capture structured bindings).
+    const auto& name = item.first;
+    const auto& body = item.second;
     CAPTURE(name);
     const fs::path input = work / (name + ".gltf");
     std::ofstream(input) << head << body;

@@ -304,7 +304,10 @@ TEST_CASE("a shard killed with SIGKILL resumes with --skip-existing: only what i
     for (const auto& r : vlit::read_manifest(m))
       if (r.status == "baked") ++baked[r.key];
   CHECK(baked.size() >= mine.size() - 1);
-  for (const auto& [key, n] : baked) {
+  for (const auto& item : baked) {
+    // Named, not bound: CAPTURE's lambda captures it (clang 14 does not capture structured bindings).
+    const auto& key = item.first;
+    const auto& n = item.second;
     CAPTURE(key);
     CHECK(n == 1);
   }

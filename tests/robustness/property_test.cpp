@@ -189,8 +189,10 @@ TEST_CASE("no NaN or Inf in any output colour: random, degenerate and extreme sc
   MESSAGE(summary.str());
   CHECK(cases > 4000);
   CHECK(generated.size() >= 6);  // point, spot, directional, linear, area, disk
-  for (const auto& [type, n] : generated) {
+  for (const auto& item : generated) {
+    // Named, not bound: CAPTURE's lambda captures it (clang 14 does not capture structured bindings).
+    const auto& type = item.first;
     CAPTURE(type);
-    CHECK(lit_by_type[type] == n);
+    CHECK(lit_by_type[type] == item.second);
   }
 }

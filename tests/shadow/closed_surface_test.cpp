@@ -66,7 +66,10 @@ TEST_CASE("closed surfaces: is_closed_surface agrees with the pair-by-pair defin
   cases.push_back({"a corner not finite", not_finite});
   cases.push_back({"nothing", {}});
   int closed = 0, open = 0;
-  for (const auto& [name, tris] : cases) {
+  for (const auto& item : cases) {
+    // Named, not bound: CAPTURE's lambda captures it (clang 14 does not capture structured bindings).
+    const auto& name = item.first;
+    const auto& tris = item.second;
     CAPTURE(name);
     const ScenePrimitive prim = primitive_of(tris);
     const bool expected = closed_by_pairs(tris);

@@ -215,8 +215,12 @@ TEST_CASE("area specular exact: random configurations vs area quadrature") {
   int cases = 0;
   for (uint64_t seed = 1; seed <= 40; ++seed) {
     Rng rng(seed);
-    const auto [poly, p, n, size] = random_polygon_case(rng);
-    const Vec3d rv = normalize(rng.unit() * (size * rng.uniform(0, 1.5)) - p);
+    // Named fields, not a structured binding: INFO below captures them in a lambda (clang 14
+    // does not capture structured bindings).
+    const RandomPolygonCase c = random_polygon_case(rng);
+    const std::vector<Vec3d>& poly = c.poly;
+    const Vec3d &p = c.p, &n = c.n;
+    const Vec3d rv = normalize(rng.unit() * (c.size * rng.uniform(0, 1.5)) - p);
     const ShadingPoint<double> sp{p, n, rv, std::round(rng.log_uniform(1, 1e3))};
     const Response<double> k = shade_area(light_of(poly), sp, spec_options(SpecularMethod::kExact, 1e-9));
     const double ref = reference_specular({poly}, sp);

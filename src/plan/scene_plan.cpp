@@ -249,7 +249,9 @@ std::string describe(const ScenePlan& plan, const Scene& scene) {
     s << "plan: shadows on for " << plan.shadowed_pairs << " of " << plan.pairs_kept << " lit pairs";
     if (plan.needs_occluders)
       s << "; BVH over " << plan.occluder_triangles << " triangles; area lights: visible part from "
-        << (plan.shade.area_shadows == AreaShadowMethod::kSilhouette ? "silhouette edges" : "triangle cuts");
+        << (plan.shade.area_shadows == AreaShadowMethod::kSilhouette ? "silhouette edges" : "triangle cuts")
+        << "; linear lights: visible intervals from "
+        << (plan.shade.linear_shadows == LinearShadowMethod::kSilhouette ? "silhouette edges" : "triangle intervals");
     else s << "; no BVH (nothing can occlude)";
     s << "\n";
   }

@@ -80,6 +80,7 @@ TEST_CASE("a blocker between floor and light is planned and darkens the floor un
   CHECK(plan.needs_occluders);
   CHECK(describe(plan, scene).find("BVH over 64 triangles") != std::string::npos);  // 2 x 4 x 4 quads x 2
   CHECK(describe(plan, scene).find("area lights: visible part from silhouette edges") != std::string::npos);
+  CHECK(describe(plan, scene).find("linear lights: visible intervals from silhouette edges") != std::string::npos);
   CHECK(plan.shadowed_of_primitive[0][0] == 1);  // floor: the plate may lie between
   CHECK(plan.shadowed_of_primitive[1][0] == 0);  // plate: planar, and nothing above it
   const auto on = light_scene_vertices(scene, request);

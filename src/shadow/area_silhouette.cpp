@@ -13,7 +13,6 @@
 namespace vlit {
 namespace {
 
-constexpr int kMaxReferenceRays = 8;
 constexpr double kThinSlab = 1e-12;
 
 struct Frame {

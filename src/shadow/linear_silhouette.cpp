@@ -5,45 +5,25 @@
 
 #include <boost/sort/pdqsort/pdqsort.hpp>
 
-#include "shadow/linear_visibility.h"
-
 namespace vlit {
 namespace {
 
-constexpr int kMaxReferenceRays = 8;
 constexpr double kThinGap = 1e-12;  // gaps between steps narrower than this (in t) are left out
-
-struct Strip {
-  const LinearShadowFrame& frame;
-  const Vec3d& p;
-  HalfSpace slab[2];  // next to the light, next to P
-};
 
 // The step of d where the clipped segment a -> b (an edge of weight w or a chord) crosses Π, if
 // it does inside (0, 1). A point exactly on Π counts as on its positive side, the same for every
 // segment through it, so a clipped triangle's sides cross Π an even number of times.
-void add_step(const Strip& s, const Vec3d& a, const Vec3d& b, int weight, std::vector<std::pair<double, int>>& steps) {
-  const double da = dot(a - s.p, s.frame.plane_normal), db = dot(b - s.p, s.frame.plane_normal);
+void add_step(const LinearShadowFrame& f, const Vec3d& p, const Vec3d& a, const Vec3d& b, int weight,
+              std::vector<std::pair<double, int>>& steps) {
+  const double da = dot(a - p, f.plane_normal), db = dot(b - p, f.plane_normal);
   const bool a_up = da >= 0, b_up = db >= 0;
   if (a_up == b_up) return;
   const Vec3d x = a + (b - a) * (da / (da - db));
-  const double lam = s.frame.lambda(s.p, x);
+  const double lam = f.lambda(p, x);
   if (!(lam > 0)) return;
-  const double t = s.frame.t_of(s.p, x, lam);
+  const double t = f.t_of(p, x, lam);
   if (!(t > 0 && t < 1)) return;
   steps.emplace_back(t, b_up ? weight : -weight);
-}
-
-// An occluder lying in Π (seen edge-on from P, so it weighs nothing) that still covers part of
-// the strip: only the triangle-by-triangle intervals count it.
-bool lies_in_plane(const OccluderBvh& occluders, std::uint32_t t, const Vec3d& p, const Vec3d& plane_normal) {
-  const auto& c = occluders.triangles().corners[t];
-  if (touches(c, p) || culled_back_face(occluders.triangles(), t, p, occluders.plane(t).normal)) return false;
-  double scale = 0;
-  for (const Vec3d& x : c) scale = std::max(scale, length(x - p));
-  for (const Vec3d& x : c)
-    if (!(std::abs(dot(x - p, plane_normal)) <= 1e-12 * scale)) return false;
-  return true;
 }
 
 }  // namespace
@@ -54,10 +34,9 @@ LinearSilhouetteVisibility visible_linear_by_silhouettes(const LinearLight<doubl
   ++scratch.queries;
   scratch.visible.clear();
   scratch.steps.clear();
-  LinearShadowFrame frame;
+  LinearShadowFrame& frame = scratch.frame;
   if (!linear_shadow_frame(light, p, frame)) return ++scratch.undecided, LinearSilhouetteVisibility::kUndecided;
-  const Strip strip{frame, p, {frame.strip_far, frame.strip_near}};
-  occluders.silhouette_candidates(frame.volume, strip.slab, 2, p, scratch.candidates, scratch.candidate_in_slab);
+  occluders.silhouette_candidates(frame.volume, frame.strip, 2, p, scratch.candidates, scratch.candidate_in_slab);
   SilhouetteFacings& facings = scratch.facings;
   facings.begin(occluders);
 
@@ -68,8 +47,12 @@ LinearSilhouetteVisibility visible_linear_by_silhouettes(const LinearLight<doubl
     // A candidate that hides nothing itself (it touches P, is a culled back face, a needle) still
     // weighs its edges: its neighbours may lie in subtrees the search skipped.
     const std::uint32_t t = scratch.candidates[i];
+    // One lying in Π weighs nothing but hides what it covers: only the intervals count it.
     const int ft = facings.facing_of(occluders, t, p);
-    if (ft == 0 && lies_in_plane(occluders, t, p, frame.plane_normal))
+    const auto& corners = occluders.triangles().corners[t];
+    if (ft == 0 && !touches(corners, p) &&
+        !culled_back_face(occluders.triangles(), t, p, occluders.plane(t).normal) &&
+        lies_in_plane(corners, p, frame.plane_normal))
       return ++scratch.undecided, LinearSilhouetteVisibility::kUndecided;
     for (int j = 0; j < 3; ++j) {
       const std::uint32_t e = edges.edge_of[t][j];
@@ -77,12 +60,12 @@ LinearSilhouetteVisibility visible_linear_by_silhouettes(const LinearLight<doubl
       const int weight = facings.edge_weight(occluders, e, p);
       if (weight == 0) continue;
       Vec3d a, b;
-      if (clip_edge_to_slab(edges.endpoints[e][0], edges.endpoints[e][1], strip.slab, a, b))
-        add_step(strip, a, b, weight, steps);
+      if (clip_edge_to_slab(edges.endpoints[e][0], edges.endpoints[e][1], frame.strip, a, b))
+        add_step(frame, p, a, b, weight, steps);
     }
     if (ft != 0 && !scratch.candidate_in_slab[i])
-      for_each_slab_chord(occluders.triangles().corners[t], strip.slab,
-                          [&](const Vec3d& exit, const Vec3d& entry) { add_step(strip, exit, entry, ft, steps); });
+      for_each_slab_chord(corners, frame.strip,
+                          [&](const Vec3d& exit, const Vec3d& entry) { add_step(frame, p, exit, entry, ft, steps); });
   }
   scratch.silhouette_steps += static_cast<long>(steps.size());
 
@@ -102,7 +85,7 @@ LinearSilhouetteVisibility visible_linear_by_silhouettes(const LinearLight<doubl
   std::size_t widest = 0;
   for (std::size_t g = 1; g < gaps; ++g)
     if (gap_hi(g) - gap_lo(g) > gap_hi(widest) - gap_lo(widest)) widest = g;
-  CountingSlab slab{frame.strip_far, frame.strip_near};
+  CountingSlab slab{frame.strip[0], frame.strip[1]};
   slab.plane_tol = kRayAmbiguity * (frame.h + frame.len);
   slab.apex_tol = std::min(slab.plane_tol, 0.5 * kLinearNearP * frame.h);
   static constexpr double kToward[kMaxReferenceRays] = {0.5, 0.31, 0.71, 0.17, 0.83, 0.43, 0.59, 0.07};

@@ -34,12 +34,14 @@
 #include <vector>
 
 #include "linear_geometry.h"
+#include "shadow/linear_visibility.h"
 #include "shadow/occluder_bvh.h"
 #include "shadow/silhouette_rule.h"
 
 namespace vlit {
 
 struct LinearSilhouetteScratch {
+  LinearShadowFrame frame;
   SilhouetteFacings facings;
   std::vector<std::uint32_t> candidates, ray_candidates;
   std::vector<std::uint8_t> candidate_in_slab;

@@ -40,8 +40,8 @@ bool linear_shadow_frame(const LinearLight<double>& light, const Vec3d& p, Linea
   frame.t_foot = -s0 / len;
   const Vec3d& m = frame.m;
   const Vec3d& plane_normal = frame.plane_normal;
-  frame.strip_near = {m, p + m * (h * kLinearNearP)};
-  frame.strip_far = {-m, p + m * (h * (1 - kLinearNearLight))};
+  frame.strip[0] = {-m, p + m * (h * (1 - kLinearNearLight))};
+  frame.strip[1] = {m, p + m * (h * kLinearNearP)};
   ConvexVolume& volume = frame.volume;
   volume.box = Aabb{};
   volume.planes.clear();
@@ -63,50 +63,42 @@ bool linear_shadow_frame(const LinearLight<double>& light, const Vec3d& p, Linea
   return true;
 }
 
+bool lies_in_plane(const std::array<Vec3d, 3>& tri, const Vec3d& p, const Vec3d& plane_normal) {
+  double scale = 0;
+  for (const Vec3d& x : tri) scale = std::max(scale, length(x - p));
+  for (const Vec3d& x : tri)
+    if (!(std::abs(dot(x - p, plane_normal)) <= 1e-12 * scale)) return false;
+  return true;
+}
+
 LinearVisibility visible_linear_intervals(const LinearLight<double>& light, const Vec3d& p,
                                           const OccluderBvh& occluders, LinearShadowScratch& scratch) {
   scratch.hidden.clear();
   scratch.visible.clear();
-  const Vec3d l0 = light.q0 - p, ld = light.q1 - light.q0;
-  const double len = length(ld);
-  const double dist = std::max(length(l0), length(light.q1 - p));
-  if (!(dist > 0)) return LinearVisibility::kUnoccluded;
-  if (!(len > 1e-15 * dist)) {
-    // A point light at the midpoint (linear_geometry.h, zero length).
-    const Vec3d mid = (light.q0 + light.q1) * 0.5;
-    if (!occluders.segment_occluded(p, mid, p)) return LinearVisibility::kUnoccluded;
+  LinearShadowFrame& frame = scratch.frame;
+  if (!linear_shadow_frame(light, p, frame)) {
+    // P at both ends: nothing to hide. A point light at the midpoint (linear_geometry.h, zero
+    // length), or P on the line: every ray runs along it, the shadow ray to the nearer end decides.
+    const Vec3d l0 = light.q0 - p, l1 = light.q1 - p;
+    const double dist = std::max(length(l0), length(l1));
+    if (!(dist > 0)) return LinearVisibility::kUnoccluded;
+    const Vec3d target = !(length(light.q1 - light.q0) > 1e-15 * dist) ? (light.q0 + light.q1) * 0.5
+                         : length(l0) <= length(l1)                  ? light.q0
+                                                                     : light.q1;
+    if (!occluders.segment_occluded(p, target, p)) return LinearVisibility::kUnoccluded;
     return LinearVisibility::kIntervals;  // nothing visible
   }
-  const Vec3d u = ld / len;
-  const double s0 = dot(l0, u);           // position of Q0 along u, from the foot's plane through P
-  const Vec3d hvec = l0 - u * s0;          // H = F - P
-  const double h = length(hvec);
-  if (!(h > kCollinear * dist)) {
-    const Vec3d nearer = length(l0) <= length(light.q1 - p) ? light.q0 : light.q1;
-    if (!occluders.segment_occluded(p, nearer, p)) return LinearVisibility::kUnoccluded;
-    return LinearVisibility::kIntervals;
-  }
-  LinearShadowFrame frame;
-  linear_shadow_frame(light, p, frame);
   const Vec3d& plane_normal = frame.plane_normal;
-  const ConvexVolume& volume = frame.volume;
-  occluders.triangles_in_volume(volume, p, scratch.candidates);
+  occluders.triangles_in_volume(frame.volume, p, scratch.candidates);
   if (scratch.candidates.empty()) return LinearVisibility::kUnoccluded;
 
-  const HalfSpace& strip_near = frame.strip_near;
-  const HalfSpace& strip_far = frame.strip_far;
   for (std::uint32_t index : scratch.candidates) {
     if (culled_back_face(occluders.triangles(), index, p, occluders.plane(index).normal)) continue;
     const auto& tri = occluders.triangles().corners[index];
-    double d[3];
-    double scale = 0;
-    for (int i = 0; i < 3; ++i) {
-      d[i] = dot(tri[i] - p, plane_normal);
-      scale = std::max(scale, length(tri[i] - p));
-    }
+    const double d[3] = {dot(tri[0] - p, plane_normal), dot(tri[1] - p, plane_normal), dot(tri[2] - p, plane_normal)};
     SmallPolygon in_plane;
-    if (std::abs(d[0]) <= 1e-12 * scale && std::abs(d[1]) <= 1e-12 * scale && std::abs(d[2]) <= 1e-12 * scale) {
-      in_plane.count = 3;  // coplanar with Π: the whole triangle
+    if (lies_in_plane(tri, p, plane_normal)) {
+      in_plane.count = 3;  // the whole triangle
       for (int i = 0; i < 3; ++i) in_plane.p[i] = tri[i];
     } else {
       for (int i = 0; i < 3; ++i) {
@@ -124,8 +116,8 @@ LinearVisibility visible_linear_intervals(const LinearLight<double>& light, cons
     }
     // Clip to the strip between P and the light (as a polygon; a segment is a 2-gon).
     SmallPolygon a = in_plane, b;
-    clip_small(a, strip_near, b);
-    clip_small(b, strip_far, a);
+    clip_small(a, frame.strip[1], b);
+    clip_small(b, frame.strip[0], a);
     if (a.count == 0) continue;
     double t_lo = 1e300, t_hi = -1e300;
     for (int i = 0; i < a.count; ++i) {

@@ -16,6 +16,7 @@
 // the light is taken as visible or hidden as a whole by the shadow ray to the nearer end.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -29,10 +30,6 @@ namespace vlit {
 inline constexpr double kLinearNearP = 1e-9;      // λ margin next to P
 inline constexpr double kLinearNearLight = 1e-7;  // λ margin next to the light
 
-struct LinearShadowScratch {
-  std::vector<std::uint32_t> candidates;
-  std::vector<std::pair<double, double>> hidden, visible;
-};
 
 enum class LinearVisibility { kUnoccluded, kIntervals };
 
@@ -43,15 +40,28 @@ struct LinearShadowFrame {
   Vec3d m;             // unit, from P to its foot on the segment's line
   Vec3d plane_normal;  // unit normal of Π
   double len = 0, h = 0, t_foot = 0;
-  HalfSpace strip_near, strip_far;  // λ >= kLinearNearP, λ <= 1 - kLinearNearLight
-  ConvexVolume volume;              // a thin slab around Π over the triangle (P, Q0, Q1)
+  // The strip's two planes: [0] next to the light (λ <= 1 - kLinearNearLight), [1] next to P
+  // (λ >= kLinearNearP), in the order the slab clipping of silhouette_rule.h reads.
+  HalfSpace strip[2];
+  ConvexVolume volume;  // a thin slab around Π over the triangle (P, Q0, Q1)
   double lambda(const Vec3d& p, const Vec3d& x) const { return dot(x - p, m) / h; }
   double t_of(const Vec3d& p, const Vec3d& x, double lam) const { return t_foot + dot(x - p, u) / lam / len; }
 };
 
 // False where the segment has (nearly) no length or P lies (nearly) on its line: then only
-// visible_linear_intervals decides, with one shadow ray.
+// visible_linear_intervals decides, with one shadow ray. The frame's volume keeps its planes'
+// storage from one call to the next (a scratch's frame allocates nothing per vertex).
 bool linear_shadow_frame(const LinearLight<double>& light, const Vec3d& p, LinearShadowFrame& frame);
+
+// The triangle lies in Π (every corner within 1e-12 of its largest distance to P): seen edge-on
+// from P, it still covers the rays to the part of the light it spans.
+bool lies_in_plane(const std::array<Vec3d, 3>& tri, const Vec3d& p, const Vec3d& plane_normal);
+
+struct LinearShadowScratch {
+  LinearShadowFrame frame;
+  std::vector<std::uint32_t> candidates;
+  std::vector<std::pair<double, double>> hidden, visible;
+};
 
 // kIntervals: scratch.visible holds the visible [t_a, t_b] intervals (possibly none).
 LinearVisibility visible_linear_intervals(const LinearLight<double>& light, const Vec3d& p,

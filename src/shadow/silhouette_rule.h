@@ -19,6 +19,8 @@ namespace vlit {
 // A shadow ray whose crossing lies within this fraction of a triangle's edge (in barycentric
 // terms) or of the slab's planes is not counted: another point is tried.
 inline constexpr double kRayAmbiguity = 1e-9;
+// The most points a query tries before it gives up on its shadow rays (kUndecided).
+inline constexpr int kMaxReferenceRays = 8;
 
 // Per occluder triangle its facing from P, and per edge whether this query weighed it already;
 // both valid for the query whose stamp they carry, so a query clears nothing.

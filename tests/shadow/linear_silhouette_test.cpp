@@ -227,3 +227,29 @@ TEST_CASE("linear silhouettes: a plate the tube passes through hides the part of
     }
   }
 }
+
+TEST_CASE("linear shadows: P on the tube's line and a tube of no length are decided by one shadow ray") {
+  // P on the line beyond Q0 (every ray runs along the line) and a tube shrunk to its midpoint: the
+  // silhouettes leave both to the intervals, which ask one ray to the nearer end (the midpoint).
+  auto tube = [](const Vec3d& q0, const Vec3d& q1) {
+    return std::get<LinearLight<double>>(prepare_light<double>(linear_source(q0, q1, 2)).kernel);
+  };
+  const LinearLight<double> along = tube({1, 0, 0}, {2, 0, 0}), dot_light = tube({0, 0, 2}, {0, 0, 2});
+  std::vector<Tri> between_p_and_q0, beyond_q0, over_p;
+  add_quad(between_p_and_q0, {0.5, -1, -1}, {0, 2, 0}, {0, 0, 2});  // the plane x = 0.5
+  add_quad(beyond_q0, {1.5, -1, -1}, {0, 2, 0}, {0, 0, 2});         // x = 1.5: hides only the far part
+  add_quad(over_p, {-1, -1, 1}, {2, 0, 0}, {0, 2, 0});              // z = 1, between P and the dot
+  const Vec3d p{0, 0, 0};
+  auto decide = [&](const LinearLight<double>& light, const std::vector<Tri>& tris) {
+    const OccluderBvh bvh = make_bvh(tris);
+    LinearSilhouetteScratch s;
+    CHECK(visible_linear_by_silhouettes(light, p, bvh, s) == LinearSilhouetteVisibility::kUndecided);
+    LinearShadowScratch intervals;
+    const LinearVisibility v = visible_linear_intervals(light, p, bvh, intervals);
+    return v == LinearVisibility::kUnoccluded ? 1 : intervals.visible.empty() ? 0 : -1;
+  };
+  CHECK(decide(along, between_p_and_q0) == 0);
+  CHECK(decide(along, beyond_q0) == 1);
+  CHECK(decide(dot_light, over_p) == 0);
+  CHECK(decide(dot_light, beyond_q0) == 1);
+}
